@@ -1,0 +1,160 @@
+#include <osgWater/Optics>
+#include <algorithm>
+#include <cmath>
+
+namespace osgWater { namespace optics {
+
+glm::vec3 safeNormalize(const glm::vec3& v, const glm::vec3& fallback)
+{
+    const float l2 = glm::dot(v, v);
+    return (l2 > 1.0e-20f && std::isfinite(l2)) ? v / std::sqrt(l2) : fallback;
+}
+
+glm::vec3 refract(const glm::vec3& I, const glm::vec3& N, float eta)
+{
+    const float d = glm::dot(N, I);
+    const float k = 1.0f - eta * eta * (1.0f - d * d);
+    if (k < 0.0f) return glm::vec3(0.0f);
+    return eta * I - (eta * d + std::sqrt(k)) * N;
+}
+
+glm::vec3 reflect(const glm::vec3& I, const glm::vec3& N) { return I - 2.0f * glm::dot(N, I) * N; }
+
+bool totalInternalReflection(float cosI, float n1, float n2)
+{
+    const float eta = n1 / n2;
+    return 1.0f - eta * eta * (1.0f - cosI * cosI) < 0.0f;
+}
+
+float criticalAngle(float n1, float n2)
+{
+    return n1 > n2 ? std::asin(n2 / n1) : float(M_PI_2);
+}
+
+glm::vec3 faceNormal(const glm::vec3& N, const glm::vec3& E, float minCos)
+{
+    const float c = glm::dot(N, E);
+    if (c >= minCos) return N;
+    return safeNormalize(N + (minCos - c) * E, E);
+}
+
+float normalReflectance(float n1, float n2)
+{
+    const float r = (n1 - n2) / (n1 + n2);
+    return r * r;
+}
+
+float fresnelSchlick(float cosE, float f, float q)
+{
+    const float c = 1.0f - std::min(std::max(cosE, 0.0f), 1.0f);
+    return f + (1.0f - f) * std::pow(c, q);
+}
+
+float fresnelPower(float cosE, float q)
+{
+    return std::pow(1.0f - std::min(std::max(cosE, 0.0f), 1.0f), q);
+}
+
+float fresnelExact(float cosI, float n1, float n2)
+{
+    const float ci = std::min(std::max(cosI, 0.0f), 1.0f);
+    const float eta = n1 / n2;
+    const float s2 = eta * eta * (1.0f - ci * ci);
+    if (s2 >= 1.0f) return 1.0f;
+    const float ct = std::sqrt(1.0f - s2);
+    const float rs = (n1 * ci - n2 * ct) / std::max(n1 * ci + n2 * ct, 1.0e-12f);
+    const float rp = (n1 * ct - n2 * ci) / std::max(n1 * ct + n2 * ci, 1.0e-12f);
+    return 0.5f * (rs * rs + rp * rp);
+}
+
+float attenuation(float k, float d)
+{
+    if (!(d >= 0.0f)) return 0.0f; // NaN or "no bottom"
+    return std::exp(-k * d);
+}
+
+glm::vec3 waterTint(const glm::vec3& refracted, const glm::vec3& water, float a)
+{
+    return water + a * (refracted - water);
+}
+
+glm::vec3 fresnelMix(const glm::vec3& refracted, const glm::vec3& reflected, float F)
+{
+    return refracted + F * (reflected - refracted);
+}
+
+bool lineIntersection(const glm::vec3& U, const glm::vec3& R, const glm::vec3& A1, const glm::vec3& Q, glm::vec3& out)
+{
+    const glm::vec3 rq = glm::cross(R, Q);
+    const float n = glm::dot(rq, rq);
+    // relative test: |R x Q|^2 against |R|^2 |Q|^2 rejects near-parallel lines at any scale
+    if (!(n > 1.0e-8f * glm::dot(R, R) * glm::dot(Q, Q))) return false;
+    const float m = glm::dot(glm::cross(A1 - U, Q), rq);
+    out = U + (m / n) * R;
+    return true;
+}
+
+bool bottomAlongRay(const glm::vec3& P, const DepthLookup& lookup, glm::vec3& A)
+{
+    if (!(P.z < -1.0e-6f)) return false; // behind or on the camera plane: no texel to read
+    const DepthSample s = lookup(P);
+    if (!s.hit) return false;
+    A = P * (s.z / P.z);
+    return true;
+}
+
+BottomHit oneStepSearch(const glm::vec3& U, const glm::vec3& R, float scale, float maxDv, const DepthLookup& lookup)
+{
+    BottomHit r;
+    glm::vec3 A1;
+    if (!bottomAlongRay(U, lookup, A1)) return r;
+    const float dv = std::min(std::max(scale * glm::length(A1 - U), 0.0f), maxDv);
+    r.valid = true;
+    r.W = U + dv * R;
+    r.A = A1;
+    r.error = 0.0f;
+    return r;
+}
+
+BottomHit iterativeSearch(const glm::vec3& U, const glm::vec3& R, int steps, const DepthLookup& lookup)
+{
+    BottomHit best;
+    steps = std::min(std::max(steps, 1), 8);
+    glm::vec3 Aprev;
+    if (!bottomAlongRay(U, lookup, Aprev)) return best;
+    glm::vec3 W = U + glm::length(Aprev - U) * R; // W_1: the one-step guess
+    best.error = INFINITY;
+    for (int i = 1; i <= steps; ++i) {
+        glm::vec3 A;
+        if (!bottomAlongRay(W, lookup, A)) break; // sky beyond W: keep the best so far
+        const float e = glm::length(A - W);
+        if (e < best.error) { best.valid = true; best.W = W; best.A = A; best.error = e; }
+        if (i == steps) break;
+        // W_{i+1}: where p crosses the segment A_i A_{i+1} (eq. 3) ...
+        glm::vec3 Wn;
+        const glm::vec3 Q = A - Aprev;
+        const float lq = glm::length(Q);
+        const bool ok = lineIntersection(U, R, Aprev, Q, Wn)
+                        && glm::length(Wn - Aprev) + glm::length(A - Wn) <= lq * 1.001f + 1.0e-5f;
+        if (!ok) {
+            // ... else step |A - W| along R, back towards U when the bottom is nearer than W (fig. 11, 12)
+            const float zn = std::fabs(W.z) > std::fabs(A.z) ? -1.0f : 1.0f;
+            Wn = W + zn * e * R;
+        }
+        Aprev = A;
+        W = Wn;
+    }
+    if (!best.valid) best.error = 0.0f;
+    return best;
+}
+
+bool intersectPlaneZ(const glm::vec3& U, const glm::vec3& R, float planeZ, glm::vec3& hit)
+{
+    if (std::fabs(R.z) < 1.0e-12f) return false;
+    const float t = (planeZ - U.z) / R.z;
+    if (!(t > 0.0f)) return false;
+    hit = U + t * R;
+    return true;
+}
+
+} }

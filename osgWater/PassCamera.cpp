@@ -1,0 +1,82 @@
+#include <osgWater/PassCamera>
+#include <osgWater/PassMath>
+#include <osgUtil/CullVisitor>
+
+using namespace osgWater;
+
+namespace {
+
+// Draws the scene under the pass camera: the camera itself has no children, so the water's
+// scene is traversed here, with the keep plane added to the culling frustum (cf. osgShadow's
+// ViewDependentShadowMap, whose cameras traverse the shadowed scene the same way).
+class PassCullCallback : public osg::NodeCallback
+{
+public:
+    void operator()(osg::Node* node, osg::NodeVisitor* nv) override
+    {
+        PassCamera* camera = static_cast<PassCamera*>(node);
+        osgUtil::CullVisitor* cv = nv->asCullVisitor();
+        if (!cv || !camera->getScene()) return;
+        // the culling set is in the camera's reference frame, which is the water's local frame
+        cv->getCurrentCullingSet().getFrustum().add(camera->getKeepPlane());
+        cv->pushStateSet(camera->getSceneState());
+        camera->getScene()->osg::Group::traverse(*nv);
+        cv->popStateSet();
+    }
+};
+
+}
+
+PassCamera::PassCamera(osg::Group* scene, osg::StateSet* sceneState, int textureSize)
+    : _scene(scene), _sceneState(sceneState), _size(textureSize), _keepPlane(0.0, 0.0, 1.0, 0.0)
+{
+    setRenderOrder(osg::Camera::PRE_RENDER);
+    setRenderTargetImplementation(osg::Camera::FRAME_BUFFER_OBJECT);
+    setReferenceFrame(osg::Camera::ABSOLUTE_RF);
+    // near/far come from the scene bound (PassMath), so the depth texture's projection is known exactly
+    setComputeNearFarMode(osg::CullSettings::DO_NOT_COMPUTE_NEAR_FAR);
+    setClearMask(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    setViewport(0, 0, textureSize, textureSize);
+    setCullCallback(new PassCullCallback);
+
+    _color = makeTexture(textureSize, GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE, true);
+    attach(osg::Camera::COLOR_BUFFER, _color.get());
+
+    osg::StateSet* ss = getOrCreateStateSet();
+    _clipPlaneUniform = new osg::Uniform("osgWater_ClipPlane", osg::Vec4f(0.0f, 0.0f, 0.0f, 1.0f));
+    _sunUniform = new osg::Uniform("osgWater_SunEye", osg::Vec3f(0.0f, 0.0f, 1.0f));
+    ss->addUniform(_clipPlaneUniform.get());
+    ss->addUniform(_sunUniform.get());
+    ss->setMode(GL_CLIP_PLANE0, osg::StateAttribute::ON); // == GL_CLIP_DISTANCE0
+    ss->setDataVariance(osg::Object::DYNAMIC);
+}
+
+osg::Texture2D* PassCamera::makeTexture(int size, GLenum internalFormat, GLenum format, GLenum type, bool linear)
+{
+    osg::Texture2D* t = new osg::Texture2D;
+    t->setTextureSize(size, size);
+    t->setInternalFormat(internalFormat);
+    t->setSourceFormat(format);
+    t->setSourceType(type);
+    const osg::Texture::FilterMode f = linear ? osg::Texture::LINEAR : osg::Texture::NEAREST;
+    t->setFilter(osg::Texture::MIN_FILTER, f);
+    t->setFilter(osg::Texture::MAG_FILTER, f);
+    t->setWrap(osg::Texture::WRAP_S, osg::Texture::CLAMP_TO_EDGE);
+    t->setWrap(osg::Texture::WRAP_T, osg::Texture::CLAMP_TO_EDGE);
+    return t;
+}
+
+void PassCamera::setKeepPlane(const osg::Plane& localPlane)
+{
+    _keepPlane = localPlane;
+}
+
+void PassCamera::setMatrices(const osg::Matrixd& view, const osg::Matrixd& projection, const osg::Vec3& sunLocal)
+{
+    setViewMatrix(view);
+    setProjectionMatrix(projection);
+    _clipPlaneUniform->set(osg::Vec4f(planeToEye(_keepPlane.asVec4(), view)));
+    osg::Vec3f sunEye = osg::Matrixd::transform3x3(sunLocal, view);
+    sunEye.normalize();
+    _sunUniform->set(sunEye);
+}

@@ -1,0 +1,89 @@
+#include <osgWater/PassMath>
+#include <osg/Quat>
+#include <algorithm>
+#include <cmath>
+
+namespace osgWater {
+
+osg::Matrixd mirrorMatrix(double level)
+{
+    return osg::Matrixd::scale(1.0, 1.0, -1.0) * osg::Matrixd::translate(0.0, 0.0, 2.0 * level);
+}
+
+osg::Matrixd extendFov(const osg::Matrixd& projection, double ext)
+{
+    const double s = 1.0 / std::max(ext, 1.0e-6);
+    return projection * osg::Matrixd::scale(s, s, 1.0);
+}
+
+osg::Matrixd withNearFar(const osg::Matrixd& projection, double zNear, double zFar)
+{
+    double l, r, b, t, n, f;
+    const bool perspective = projection(3, 3) == 0.0;
+    if (perspective && projection.getFrustum(l, r, b, t, n, f)) {
+        const double s = zNear / n;
+        return osg::Matrixd::frustum(l * s, r * s, b * s, t * s, zNear, zFar);
+    }
+    if (!perspective && projection.getOrtho(l, r, b, t, n, f))
+        return osg::Matrixd::ortho(l, r, b, t, zNear, zFar);
+    return projection;
+}
+
+bool nearFarForBound(const osg::Matrixd& view, const osg::BoundingSphere& bound, double& zNear, double& zFar)
+{
+    if (!bound.valid()) return false;
+    const double depth = -(osg::Vec3d(bound.center()) * view).z(); // distance along -Z
+    zFar = depth + bound.radius();
+    if (zFar <= 0.0) return false;
+    // 1e-4 of far keeps a 24-bit depth buffer meaningful when the eye is inside the bound
+    zNear = std::max(depth - bound.radius(), zFar * 1.0e-4);
+    zFar *= 1.001;
+    return true;
+}
+
+osg::Matrixd rotatedRefractionView(const osg::Matrixd& view, const osg::Matrixd& projection, double level, double eta)
+{
+    const osg::Matrixd inv = osg::Matrixd::inverse(view * projection);
+    // the ray through the bottom-centre of the screen, in the local frame
+    const osg::Vec3d pn = osg::Vec3d(0.0, -1.0, -1.0) * inv;
+    const osg::Vec3d pf = osg::Vec3d(0.0, -1.0, 1.0) * inv;
+    const osg::Vec3d C1 = eyePosition(view);
+    osg::Vec3d I = pf - pn;
+    if (I.normalize() == 0.0 || C1.z() <= level || I.z() >= -1.0e-6) return view;
+    // eq. 1: O = C1 - (N.(C1 - V)) / (N.J) J, with N = +z and V on the plane
+    const double t = (C1.z() - level) / -I.z();
+    const osg::Vec3d O = C1 + I * t;
+    // eq. 2 with N facing the incoming ray
+    const osg::Vec3d N(0.0, 0.0, 1.0);
+    const double d = N * I;
+    const double k = 1.0 - eta * eta * (1.0 - d * d);
+    if (k < 0.0) return view;
+    osg::Vec3d R = I * eta - N * (eta * d + std::sqrt(k));
+    R.normalize();
+    osg::Quat q;
+    q.makeRotate(I, R);
+    // rotate the camera (its camera-to-local transform) about O
+    const osg::Matrixd cameraToLocal = osg::Matrixd::inverse(view);
+    const osg::Matrixd about = osg::Matrixd::translate(-O) * osg::Matrixd::rotate(q) * osg::Matrixd::translate(O);
+    return osg::Matrixd::inverse(cameraToLocal * about);
+}
+
+osg::Vec4d planeToEye(const osg::Vec4d& p, const osg::Matrixd& view)
+{
+    // p . x_local = p . (x_eye * V^-1) = (V^-1 p) . x_eye
+    return osg::Matrixd::inverse(view).postMult(p);
+}
+
+osg::Vec3d eyePosition(const osg::Matrixd& view)
+{
+    return osg::Vec3d(0.0, 0.0, 0.0) * osg::Matrixd::inverse(view);
+}
+
+osg::Vec3d projectToTexture(const osg::Vec3d& local, const osg::Matrixd& view, const osg::Matrixd& projection)
+{
+    const osg::Vec4d c = osg::Vec4d(local, 1.0) * view * projection;
+    const double w = std::fabs(c.w()) > 1.0e-300 ? c.w() : 1.0e-300;
+    return osg::Vec3d(c.x() / w * 0.5 + 0.5, c.y() / w * 0.5 + 0.5, c.z() / w * 0.5 + 0.5);
+}
+
+}

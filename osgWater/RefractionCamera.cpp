@@ -1,0 +1,34 @@
+#include <osgWater/RefractionCamera>
+#include <osgWater/PassMath>
+#include <osgWater/WaterSettings>
+#include <osg/CullFace>
+
+using namespace osgWater;
+
+RefractionCamera::RefractionCamera(osg::Group* scene, osg::StateSet* sceneState, int textureSize)
+    : PassCamera(scene, sceneState, textureSize)
+{
+    setName("osgWater.RefractionCamera");
+    _depth = makeTexture(textureSize, GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT, GL_FLOAT, false);
+    attach(osg::Camera::DEPTH_BUFFER, _depth.get());
+    // thesis fig. 3: clipped solids must not show their insides
+    getOrCreateStateSet()->setAttributeAndModes(new osg::CullFace(osg::CullFace::BACK), osg::StateAttribute::ON);
+    setClearColor(osg::Vec4(0.0f, 0.0f, 0.0f, 0.0f));
+}
+
+void RefractionCamera::update(const PassContext& ctx)
+{
+    // keep the far side, up to just beyond the crests
+    const double s = ctx.eyeBelow ? 1.0 : -1.0;
+    setKeepPlane(osg::Plane(0.0, 0.0, s, -s * ctx.level + ctx.clearance));
+
+    osg::Matrixd view = ctx.view;
+    if (ctx.settings && ctx.settings->getRefractionCameraRotation() && !ctx.eyeBelow)
+        view = rotatedRefractionView(ctx.view, ctx.projection, ctx.level,
+                                     ctx.settings->getAirIOR() / ctx.settings->getWaterIOR());
+    double zn = 0.1, zf = 1000.0;
+    nearFarForBound(view, ctx.scene, zn, zf);
+    const osg::Matrixd proj = withNearFar(extendFov(ctx.projection, ctx.fovExtension), zn, zf);
+    osg::Vec3 sun = ctx.settings ? ctx.settings->getSunDirection() : osg::Vec3(0.0f, 0.0f, 1.0f);
+    setMatrices(view, proj, sun);
+}

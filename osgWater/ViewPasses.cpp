@@ -1,0 +1,84 @@
+#include <osgWater/ViewPasses>
+#include <osgWater/PassMath>
+#include <osgWater/WaterSettings>
+#include <OpenThreads/ScopedLock>
+
+using namespace osgWater;
+
+ViewPasses::ViewPasses(osg::Group* scene, osg::StateSet* sceneState, int reflectionSize, int refractionSize)
+{
+    _reflection = new ReflectionCamera(scene, sceneState, reflectionSize);
+    _refraction = new RefractionCamera(scene, sceneState, refractionSize);
+    _stateSet = new osg::StateSet;
+    _stateSet->setDataVariance(osg::Object::DYNAMIC);
+    _stateSet->setTextureAttribute(1, _reflection->getColorTexture());
+    _stateSet->setTextureAttribute(2, _refraction->getColorTexture());
+    _stateSet->setTextureAttribute(3, _refraction->getDepthTexture());
+    const char* mats[] = { "osgWater_ReflectionMVP", "osgWater_RefractionView", "osgWater_RefractionViewInverse",
+                           "osgWater_RefractionProj", "osgWater_RefractionInvProj" };
+    for (const char* m : mats) _stateSet->addUniform(new osg::Uniform(m, osg::Matrixf()));
+    _stateSet->addUniform(new osg::Uniform("osgWater_EyeLocal", osg::Vec3f()));
+    _stateSet->addUniform(new osg::Uniform("osgWater_EyeBelow", 0.0f));
+    _stateSet->addUniform(new osg::Uniform("osgWater_SunEye", osg::Vec3f(0.0f, 0.0f, 1.0f)));
+    _stateSet->addUniform(new osg::Uniform("osgWater_ClipPlane", osg::Vec4f(0.0f, 0.0f, 0.0f, 1.0f)));
+}
+
+bool ViewPasses::matchesSizes(int reflectionSize, int refractionSize) const
+{
+    return _reflection->getTextureSize() == reflectionSize && _refraction->getTextureSize() == refractionSize;
+}
+
+void ViewPasses::update(const PassContext& ctx, bool reflection, bool refraction)
+{
+    if (reflection) _reflection->update(ctx);
+    if (refraction) _refraction->update(ctx);
+    osg::StateSet* ss = _stateSet.get();
+    ss->getUniform("osgWater_ReflectionMVP")->set(osg::Matrixf(_reflection->getViewProjection()));
+    const osg::Matrixd& rv = _refraction->getViewMatrix();
+    const osg::Matrixd& rp = _refraction->getProjectionMatrix();
+    ss->getUniform("osgWater_RefractionView")->set(osg::Matrixf(rv));
+    ss->getUniform("osgWater_RefractionViewInverse")->set(osg::Matrixf(osg::Matrixd::inverse(rv)));
+    ss->getUniform("osgWater_RefractionProj")->set(osg::Matrixf(rp));
+    ss->getUniform("osgWater_RefractionInvProj")->set(osg::Matrixf(osg::Matrixd::inverse(rp)));
+    ss->getUniform("osgWater_EyeLocal")->set(osg::Vec3f(eyePosition(ctx.view)));
+    ss->getUniform("osgWater_EyeBelow")->set(ctx.eyeBelow ? 1.0f : 0.0f);
+    if (ctx.settings) {
+        osg::Vec3f sun = osg::Matrixd::transform3x3(ctx.settings->getSunDirection(), ctx.view);
+        sun.normalize();
+        ss->getUniform("osgWater_SunEye")->set(sun);
+    }
+}
+
+ViewPasses* ViewPassesMap::get(osg::Camera* camera, osg::Group* scene, osg::StateSet* sceneState,
+                               int reflectionSize, int refractionSize)
+{
+    OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_mutex);
+    // release the passes of views that are gone
+    for (auto it = _map.begin(); it != _map.end();)
+        it = it->second.camera.valid() ? std::next(it) : _map.erase(it);
+    Entry& e = _map[camera];
+    if (!e.passes.valid() || !e.passes->matchesSizes(reflectionSize, refractionSize)) {
+        e.camera = camera;
+        e.passes = new ViewPasses(scene, sceneState, reflectionSize, refractionSize);
+    }
+    return e.passes.get();
+}
+
+ViewPasses* ViewPassesMap::find(osg::Camera* camera) const
+{
+    OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_mutex);
+    auto it = _map.find(camera);
+    return it == _map.end() ? nullptr : it->second.passes.get();
+}
+
+size_t ViewPassesMap::size() const
+{
+    OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_mutex);
+    return _map.size();
+}
+
+void ViewPassesMap::clear()
+{
+    OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_mutex);
+    _map.clear();
+}

@@ -1,0 +1,130 @@
+#include <osgWater/WaterSettings>
+#include <osg/Notify>
+#include <osg/Math>
+#include <osg/io_utils>
+#include <algorithm>
+#include <cmath>
+
+using namespace osgWater;
+
+namespace {
+
+// Clamp helpers: NaN falls back to the default, anything else to [lo, hi]; both warn.
+float clampOr(const char* name, float v, float lo, float hi, float fallback)
+{
+    if (std::isnan(v)) {
+        OSG_WARN << "osgWater::WaterSettings: " << name << " is NaN, using " << fallback << std::endl;
+        return fallback;
+    }
+    if (v < lo || v > hi) {
+        float c = std::min(std::max(v, lo), hi);
+        OSG_WARN << "osgWater::WaterSettings: " << name << " = " << v << " out of [" << lo << ", " << hi
+                 << "], clamped to " << c << std::endl;
+        return c;
+    }
+    return v;
+}
+
+int clampInt(const char* name, int v, int lo, int hi)
+{
+    if (v < lo || v > hi) {
+        int c = std::min(std::max(v, lo), hi);
+        OSG_WARN << "osgWater::WaterSettings: " << name << " = " << v << " out of [" << lo << ", " << hi
+                 << "], clamped to " << c << std::endl;
+        return c;
+    }
+    return v;
+}
+
+osg::Vec3 clampColor(const char* name, const osg::Vec3& c, const osg::Vec3& fallback, float hi)
+{
+    osg::Vec3 r;
+    for (int i = 0; i < 3; ++i) r[i] = clampOr(name, c[i], 0.0f, hi, fallback[i]);
+    return r;
+}
+
+}
+
+WaterSettings::WaterSettings()
+    : _airIOR(1.0f), _waterIOR(1.333f),
+      _waterColor(0.0f, 0.2f, 0.1f), _attenuation(0.5f),
+      _fresnelModel(FRESNEL_SCHLICK), _fresnelExponent(5.0f),
+      _reflectionScale(1.0f),
+      _refractionLookup(ITERATIVE), _searchSteps(3),
+      _oneStepScale(1.0f), _oneStepMaxDepth(20.0f), _underwaterLookupScale(1.5f),
+      _fovExtNear(1.5f), _fovExtFar(1.2f), _fovExtFalloff(10.0f),
+      _clipOffset(0.05f),
+      _reflectionTextureSize(512), _refractionTextureSize(512),
+      _refractionCameraRotation(false), _reflectionEnabled(true), _refractionEnabled(true),
+      _sunDirection(osg::Vec3(0.3f, 0.4f, 0.866f)), _sunColor(1.0f, 1.0f, 0.9f), _ambientColor(0.35f, 0.38f, 0.45f),
+      _revision(0)
+{
+    _sunDirection.normalize();
+}
+
+WaterSettings::WaterSettings(const WaterSettings& o, const osg::CopyOp& copyop)
+    : osg::Object(o, copyop),
+      _airIOR(o._airIOR), _waterIOR(o._waterIOR), _waterColor(o._waterColor), _attenuation(o._attenuation),
+      _fresnelModel(o._fresnelModel), _fresnelExponent(o._fresnelExponent), _reflectionScale(o._reflectionScale),
+      _refractionLookup(o._refractionLookup), _searchSteps(o._searchSteps),
+      _oneStepScale(o._oneStepScale), _oneStepMaxDepth(o._oneStepMaxDepth),
+      _underwaterLookupScale(o._underwaterLookupScale),
+      _fovExtNear(o._fovExtNear), _fovExtFar(o._fovExtFar), _fovExtFalloff(o._fovExtFalloff),
+      _clipOffset(o._clipOffset),
+      _reflectionTextureSize(o._reflectionTextureSize), _refractionTextureSize(o._refractionTextureSize),
+      _refractionCameraRotation(o._refractionCameraRotation),
+      _reflectionEnabled(o._reflectionEnabled), _refractionEnabled(o._refractionEnabled),
+      _sunDirection(o._sunDirection), _sunColor(o._sunColor), _ambientColor(o._ambientColor),
+      _revision(0)
+{
+}
+
+void WaterSettings::setAirIOR(float v) { _airIOR = clampOr("airIOR", v, 1.0f, 3.0f, 1.0f); touch(); }
+void WaterSettings::setWaterIOR(float v) { _waterIOR = clampOr("waterIOR", v, 1.0f, 3.0f, 1.333f); touch(); }
+void WaterSettings::setWaterColor(const osg::Vec3& c) { _waterColor = clampColor("waterColor", c, osg::Vec3(0.0f, 0.2f, 0.1f), 1.0f); touch(); }
+void WaterSettings::setAttenuation(float k) { _attenuation = clampOr("attenuation", k, 0.0f, 100.0f, 0.5f); touch(); }
+void WaterSettings::setFresnelExponent(float q) { _fresnelExponent = clampOr("fresnelExponent", q, 0.1f, 64.0f, 5.0f); touch(); }
+void WaterSettings::setReflectionScale(float c) { _reflectionScale = clampOr("reflectionScale", c, 0.0f, 1000.0f, 1.0f); touch(); }
+void WaterSettings::setSearchSteps(int n) { _searchSteps = clampInt("searchSteps", n, 1, 8); touch(); }
+void WaterSettings::setOneStepScale(float s) { _oneStepScale = clampOr("oneStepScale", s, 0.0f, 100.0f, 1.0f); touch(); }
+void WaterSettings::setOneStepMaxDepth(float d) { _oneStepMaxDepth = clampOr("oneStepMaxDepth", d, 0.0f, 1.0e4f, 20.0f); touch(); }
+void WaterSettings::setUnderwaterLookupScale(float m) { _underwaterLookupScale = clampOr("underwaterLookupScale", m, 0.0f, 1000.0f, 1.5f); touch(); }
+void WaterSettings::setClipOffset(float d) { _clipOffset = clampOr("clipOffset", d, 0.0f, 100.0f, 0.05f); touch(); }
+void WaterSettings::setReflectionTextureSize(int s) { _reflectionTextureSize = clampInt("reflectionTextureSize", s, 16, 4096); touch(); }
+void WaterSettings::setRefractionTextureSize(int s) { _refractionTextureSize = clampInt("refractionTextureSize", s, 16, 4096); touch(); }
+void WaterSettings::setSunColor(const osg::Vec3& c) { _sunColor = clampColor("sunColor", c, osg::Vec3(1.0f, 1.0f, 0.9f), 100.0f); touch(); }
+void WaterSettings::setAmbientColor(const osg::Vec3& c) { _ambientColor = clampColor("ambientColor", c, osg::Vec3(0.35f, 0.38f, 0.45f), 100.0f); touch(); }
+
+void WaterSettings::setFovExtension(float nearExt, float farExt, float falloffHeight)
+{
+    _fovExtNear = clampOr("fovExtensionNear", nearExt, 1.0f, 4.0f, 1.5f);
+    _fovExtFar = clampOr("fovExtensionFar", farExt, 1.0f, 4.0f, 1.2f);
+    _fovExtFalloff = clampOr("fovExtensionFalloff", falloffHeight, 0.01f, 1.0e5f, 10.0f);
+    touch();
+}
+
+void WaterSettings::setSunDirection(const osg::Vec3& d)
+{
+    osg::Vec3 n = d;
+    if (!n.valid() || n.length2() < 1e-12f) {
+        OSG_WARN << "osgWater::WaterSettings: sunDirection " << d << " is not a direction, using default" << std::endl;
+        n = osg::Vec3(0.3f, 0.4f, 0.866f);
+    }
+    n.normalize();
+    _sunDirection = n;
+    touch();
+}
+
+float WaterSettings::getNormalReflectance() const
+{
+    const float r = (_airIOR - _waterIOR) / (_airIOR + _waterIOR);
+    return r * r;
+}
+
+float WaterSettings::fovExtensionAt(double eyeHeight) const
+{
+    // exponential falloff: exactly nearExt on the water, e-folding height falloffHeight.
+    const double h = std::isfinite(eyeHeight) ? std::fabs(eyeHeight) : 1.0e30;
+    const double w = std::exp(-h / _fovExtFalloff);
+    return float(_fovExtFar + (_fovExtNear - _fovExtFar) * w);
+}

@@ -1,0 +1,108 @@
+#include <osgWater/WaterStateSets>
+#include <osgWater/WaterSettings>
+#include <osgWater/WaterSurface>
+#include <osgWater/Shaders>
+#include <osg/Material>
+#include <osg/Texture2D>
+#include <osg/Image>
+
+using namespace osgWater;
+
+namespace {
+
+osg::Texture2D* whiteTexture()
+{
+    osg::ref_ptr<osg::Image> img = new osg::Image;
+    img->allocateImage(1, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE);
+    unsigned char* p = img->data();
+    p[0] = p[1] = p[2] = p[3] = 255;
+    osg::Texture2D* t = new osg::Texture2D(img.get());
+    t->setName("osgWater.white");
+    return t;
+}
+
+void setDefine(osg::StateSet* ss, const char* name, bool on)
+{
+    if (on) ss->setDefine(name);
+    else ss->removeDefine(name);
+}
+
+}
+
+WaterStateSets::WaterStateSets()
+{
+    _scene = new osg::StateSet;
+    _scene->setName("osgWater.scene");
+    _scene->setAttribute(createProgram("osgWater.scene", "scene.vert", "scene.frag"));
+    // geometry without a texture samples this white texel; children's own textures override it
+    _scene->setTextureAttribute(0, whiteTexture());
+    _scene->addUniform(new osg::Uniform("osgWater_BaseTexture", 0));
+    osg::ref_ptr<osg::Material> m = new osg::Material; // GL's default material, made explicit
+    _scene->setAttribute(m.get());
+    _scene->addUniform(new osg::Uniform("osgWater_SunColor", osg::Vec3f(1.0f, 1.0f, 1.0f)));
+    _scene->addUniform(new osg::Uniform("osgWater_Ambient", osg::Vec3f(0.3f, 0.3f, 0.3f)));
+
+    _water = new osg::StateSet;
+    _water->setName("osgWater.water");
+    _water->setAttribute(createProgram("osgWater.water", "water.vert", "water.frag"));
+    _water->addUniform(new osg::Uniform("osgWater_ReflectionTex", 1));
+    _water->addUniform(new osg::Uniform("osgWater_RefractionTex", 2));
+    _water->addUniform(new osg::Uniform("osgWater_RefractionDepth", 3));
+    _water->setDataVariance(osg::Object::DYNAMIC);
+    osg::ref_ptr<osg::Uniform> waves = new osg::Uniform(osg::Uniform::FLOAT_VEC4, "osgWater_Waves", WaterSurface::MAX_WAVES);
+    osg::ref_ptr<osg::Uniform> phases = new osg::Uniform(osg::Uniform::FLOAT, "osgWater_WavePhases", WaterSurface::MAX_WAVES);
+    _water->addUniform(waves.get());
+    _water->addUniform(phases.get());
+    const char* floats[] = { "osgWater_Level", "osgWater_Attenuation", "osgWater_FresnelQ", "osgWater_ReflectionScale",
+                             "osgWater_UnderwaterScale" };
+    for (const char* f : floats) _water->addUniform(new osg::Uniform(f, 0.0f));
+    _water->addUniform(new osg::Uniform("osgWater_WaveCount", 0));
+    _water->addUniform(new osg::Uniform("osgWater_SearchSteps", 3));
+    _water->addUniform(new osg::Uniform("osgWater_IOR", osg::Vec2f(1.0f, 1.333f)));
+    _water->addUniform(new osg::Uniform("osgWater_OneStep", osg::Vec2f(1.0f, 20.0f)));
+    _water->addUniform(new osg::Uniform("osgWater_WaterColor", osg::Vec3f()));
+}
+
+void WaterStateSets::applySettings(const WaterSettings& s, const WaterSurface& surface, DebugOutput debug)
+{
+    _scene->getUniform("osgWater_SunColor")->set(s.getSunColor());
+    _scene->getUniform("osgWater_Ambient")->set(s.getAmbientColor());
+
+    osg::StateSet* w = _water.get();
+    w->getUniform("osgWater_IOR")->set(osg::Vec2f(s.getAirIOR(), s.getWaterIOR()));
+    w->getUniform("osgWater_WaterColor")->set(s.getWaterColor());
+    w->getUniform("osgWater_Attenuation")->set(s.getAttenuation());
+    w->getUniform("osgWater_FresnelQ")->set(s.getFresnelExponent());
+    w->getUniform("osgWater_ReflectionScale")->set(s.getReflectionScale());
+    w->getUniform("osgWater_UnderwaterScale")->set(s.getUnderwaterLookupScale());
+    w->getUniform("osgWater_SearchSteps")->set(s.getSearchSteps());
+    w->getUniform("osgWater_OneStep")->set(osg::Vec2f(s.getOneStepScale(), s.getOneStepMaxDepth()));
+    w->getUniform("osgWater_Level")->set(float(surface.getLevel()));
+
+    const std::vector<Wave>& waves = surface.getWaves();
+    osg::Uniform* wu = w->getUniform("osgWater_Waves");
+    for (unsigned int i = 0; i < WaterSurface::MAX_WAVES; ++i) {
+        osg::Vec4f v;
+        if (i < waves.size()) {
+            const float k = waves[i].wavenumber();
+            v.set(waves[i].direction.x() * k, waves[i].direction.y() * k, waves[i].amplitude, 0.0f);
+        }
+        wu->setElement(i, v);
+    }
+    w->getUniform("osgWater_WaveCount")->set(int(waves.size()));
+
+    setDefine(w, "OSGWATER_GRID", surface.usesGrid());
+    setDefine(w, "OSGWATER_ONE_STEP", s.getRefractionLookup() == WaterSettings::ONE_STEP);
+    w->setDefine("OSGWATER_FRESNEL", s.getFresnelModel() == WaterSettings::FRESNEL_EXACT ? "2"
+                                     : s.getFresnelModel() == WaterSettings::FRESNEL_POWER ? "1" : "0");
+    setDefine(w, "OSGWATER_NO_REFLECTION", !s.getReflectionEnabled());
+    setDefine(w, "OSGWATER_NO_REFRACTION", !s.getRefractionEnabled());
+    setDefine(w, "OSGWATER_DEBUG_HIT", debug == DEBUG_BOTTOM_HIT);
+}
+
+void WaterStateSets::applyTime(const WaterSurface& surface, double t)
+{
+    osg::Uniform* pu = _water->getUniform("osgWater_WavePhases");
+    for (unsigned int i = 0; i < WaterSurface::MAX_WAVES; ++i)
+        pu->setElement(i, surface.wrappedPhase(i, t));
+}

@@ -1,0 +1,182 @@
+#include <osgWater/WaterSurface>
+#include <osg/Notify>
+#include <algorithm>
+#include <cmath>
+
+using namespace osgWater;
+
+namespace {
+const double kTwoPi = 6.283185307179586;
+const double kGravity = 9.81;
+}
+
+float Wave::wavenumber() const { return float(kTwoPi / std::max(wavelength, 1.0e-3f)); }
+float Wave::angularFrequency() const { return float(std::sqrt(kGravity * wavenumber())); }
+
+std::vector<Wave> osgWater::defaultWaves()
+{
+    std::vector<Wave> w(4);
+    w[0].direction.set(1.0f, 0.2f);  w[0].wavelength = 6.0f; w[0].amplitude = 0.030f; w[0].phase = 0.0f;
+    w[1].direction.set(0.6f, 1.0f);  w[1].wavelength = 3.5f; w[1].amplitude = 0.020f; w[1].phase = 1.3f;
+    w[2].direction.set(-0.7f, 0.8f); w[2].wavelength = 2.1f; w[2].amplitude = 0.015f; w[2].phase = 2.1f;
+    w[3].direction.set(0.9f, -0.5f); w[3].wavelength = 1.3f; w[3].amplitude = 0.010f; w[3].phase = 4.0f;
+    for (Wave& x : w) x.direction.normalize();
+    return w;
+}
+
+WaterSurface::WaterSurface()
+    : _level(0.0), _size(100.0f), _center(0.0f, 0.0f), _resolution(49), _waves(defaultWaves()), _revision(0)
+{
+    rebuild();
+}
+
+WaterSurface::WaterSurface(const WaterSurface& o, const osg::CopyOp& copyop)
+    : osg::Geode(o, copyop), _level(o._level), _size(o._size), _center(o._center), _resolution(o._resolution),
+      _waves(o._waves), _userMesh(o._userMesh), _revision(0)
+{
+    rebuild();
+}
+
+void WaterSurface::setLevel(double z)
+{
+    if (!std::isfinite(z)) { OSG_WARN << "osgWater::WaterSurface: level " << z << " is not finite, using 0" << std::endl; z = 0.0; }
+    _level = z;
+    rebuild();
+}
+
+void WaterSurface::setSize(float size)
+{
+    if (!(size > 0.01f) || !std::isfinite(size)) {
+        OSG_WARN << "osgWater::WaterSurface: size " << size << " clamped to 100" << std::endl;
+        size = 100.0f;
+    }
+    _size = std::min(size, 1.0e7f);
+    rebuild();
+}
+
+void WaterSurface::setCenter(const osg::Vec2& c)
+{
+    _center = c.valid() ? c : osg::Vec2(0.0f, 0.0f);
+    rebuild();
+}
+
+void WaterSurface::setResolution(unsigned int n)
+{
+    const unsigned int c = std::min(std::max(n, 2u), 1025u);
+    if (c != n) OSG_WARN << "osgWater::WaterSurface: resolution " << n << " clamped to " << c << std::endl;
+    _resolution = c;
+    rebuild();
+}
+
+void WaterSurface::setWaves(const std::vector<Wave>& waves)
+{
+    if (waves.size() > MAX_WAVES)
+        OSG_WARN << "osgWater::WaterSurface: " << waves.size() << " waves given, using the first " << MAX_WAVES << std::endl;
+    _waves.assign(waves.begin(), waves.begin() + std::min<size_t>(waves.size(), MAX_WAVES));
+    for (Wave& w : _waves) {
+        if (!w.direction.valid() || w.direction.length2() < 1e-12f) w.direction.set(1.0f, 0.0f);
+        w.direction.normalize();
+        if (!std::isfinite(w.wavelength) || w.wavelength < 0.01f) {
+            OSG_WARN << "osgWater::WaterSurface: wavelength " << w.wavelength << " clamped to 0.01" << std::endl;
+            w.wavelength = 0.01f;
+        }
+        if (!std::isfinite(w.amplitude) || w.amplitude < 0.0f) {
+            OSG_WARN << "osgWater::WaterSurface: amplitude " << w.amplitude << " clamped to 0" << std::endl;
+            w.amplitude = 0.0f;
+        }
+        if (!std::isfinite(w.phase)) w.phase = 0.0f;
+    }
+    rebuild();
+}
+
+void WaterSurface::setMesh(osg::Geometry* mesh)
+{
+    _userMesh = mesh;
+    rebuild();
+}
+
+float WaterSurface::getMaxAmplitude() const
+{
+    if (_userMesh.valid()) {
+        const osg::BoundingBox& bb = _userMesh->getBoundingBox();
+        if (!bb.valid()) return 0.0f;
+        return float(std::max(std::fabs(bb.zMax() - _level), std::fabs(bb.zMin() - _level)));
+    }
+    float a = 0.0f;
+    for (const Wave& w : _waves) a += w.amplitude;
+    return a;
+}
+
+float WaterSurface::wrappedPhase(unsigned int i, double t) const
+{
+    if (i >= _waves.size()) return 0.0f;
+    if (!std::isfinite(t)) t = 0.0;
+    const Wave& w = _waves[i];
+    double p = std::fmod(double(w.angularFrequency()) * t - double(w.phase), kTwoPi);
+    if (p < 0.0) p += kTwoPi;
+    return float(p);
+}
+
+double WaterSurface::height(double x, double y, double t) const
+{
+    double h = _level;
+    for (unsigned int i = 0; i < _waves.size(); ++i) {
+        const Wave& w = _waves[i];
+        const double k = w.wavenumber();
+        h += w.amplitude * std::sin(k * (w.direction.x() * x + w.direction.y() * y) - wrappedPhase(i, t));
+    }
+    return h;
+}
+
+osg::Vec3d WaterSurface::normal(double x, double y, double t) const
+{
+    double hx = 0.0, hy = 0.0;
+    for (unsigned int i = 0; i < _waves.size(); ++i) {
+        const Wave& w = _waves[i];
+        const double k = w.wavenumber();
+        const double c = w.amplitude * k * std::cos(k * (w.direction.x() * x + w.direction.y() * y) - wrappedPhase(i, t));
+        hx += c * w.direction.x();
+        hy += c * w.direction.y();
+    }
+    osg::Vec3d n(-hx, -hy, 1.0);
+    n.normalize();
+    return n;
+}
+
+void WaterSurface::rebuild()
+{
+    ++_revision;
+    removeDrawables(0, getNumDrawables());
+    if (_userMesh.valid()) {
+        addDrawable(_userMesh.get());
+        return;
+    }
+    const unsigned int n = _resolution;
+    osg::ref_ptr<osg::Vec3Array> v = new osg::Vec3Array;
+    v->reserve(n * n);
+    const float step = _size / float(n - 1);
+    const float x0 = _center.x() - 0.5f * _size, y0 = _center.y() - 0.5f * _size;
+    for (unsigned int j = 0; j < n; ++j)
+        for (unsigned int i = 0; i < n; ++i)
+            v->push_back(osg::Vec3(x0 + i * step, y0 + j * step, float(_level)));
+    osg::ref_ptr<osg::DrawElementsUInt> tris = new osg::DrawElementsUInt(GL_TRIANGLES);
+    tris->reserve((n - 1) * (n - 1) * 6);
+    for (unsigned int j = 0; j + 1 < n; ++j)
+        for (unsigned int i = 0; i + 1 < n; ++i) {
+            const unsigned int a = j * n + i, b = a + 1, c = a + n, d = c + 1;
+            tris->push_back(a); tris->push_back(b); tris->push_back(d);
+            tris->push_back(a); tris->push_back(d); tris->push_back(c);
+        }
+    osg::ref_ptr<osg::Vec3Array> nrm = new osg::Vec3Array(1);
+    (*nrm)[0].set(0.0f, 0.0f, 1.0f);
+    osg::ref_ptr<osg::Geometry> g = new osg::Geometry;
+    g->setName("osgWater.grid");
+    g->setUseVertexBufferObjects(true);
+    g->setVertexArray(v.get());
+    g->setNormalArray(nrm.get(), osg::Array::BIND_OVERALL);
+    g->addPrimitiveSet(tris.get());
+    // the vertex shader moves vertices by up to the amplitude: grow the bound so culling stays right
+    const float a = getMaxAmplitude();
+    g->setInitialBound(osg::BoundingBox(x0, y0, float(_level) - a, x0 + _size, y0 + _size, float(_level) + a));
+    addDrawable(g.get());
+}

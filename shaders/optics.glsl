@@ -1,0 +1,129 @@
+// Optics of the water shader. Mirrored line by line in osgWater/Optics.cpp (same names, same
+// guards); tests hold both to the same numbers. Robust by construction: refract() returns 0 under
+// total internal reflection (a mask, never normalised), every division is guarded, depth 1.0 is
+// sky (a miss, not a bottom).
+
+vec3 owSafeNormalize(vec3 v, vec3 fallback)
+{
+    float l2 = dot(v, v);
+    return l2 > 1e-20 ? v * inversesqrt(l2) : fallback;
+}
+
+// Bends N towards E so that E.N >= minCos (wave normals facing away from a grazing eye).
+vec3 owFaceNormal(vec3 N, vec3 E, float minCos)
+{
+    float c = dot(N, E);
+    return c >= minCos ? N : owSafeNormalize(N + (minCos - c) * E, E);
+}
+
+float owFresnelSchlick(float cosE, float f, float q)
+{
+    return f + (1.0 - f) * pow(1.0 - clamp(cosE, 0.0, 1.0), q);
+}
+
+float owFresnelPower(float cosE, float q)
+{
+    return pow(1.0 - clamp(cosE, 0.0, 1.0), q);
+}
+
+float owFresnelExact(float cosI, float n1, float n2)
+{
+    float ci = clamp(cosI, 0.0, 1.0);
+    float eta = n1 / n2;
+    float s2 = eta * eta * (1.0 - ci * ci);
+    if (s2 >= 1.0) return 1.0;
+    float ct = sqrt(1.0 - s2);
+    float rs = (n1 * ci - n2 * ct) / max(n1 * ci + n2 * ct, 1e-12);
+    float rp = (n1 * ct - n2 * ci) / max(n1 * ct + n2 * ci, 1e-12);
+    return 0.5 * (rs * rs + rp * rp);
+}
+
+// eq. 4; d < 0 means "no bottom along the ray"
+float owAttenuation(float k, float d)
+{
+    return d >= 0.0 ? exp(-k * d) : 0.0;
+}
+
+// eq. 3: the point on U + t R where it meets the line A1 + s Q; false for near-parallel lines
+bool owLineIntersection(vec3 U, vec3 R, vec3 A1, vec3 Q, out vec3 W)
+{
+    vec3 rq = cross(R, Q);
+    float n = dot(rq, rq);
+    W = U;
+    if (!(n > 1e-8 * dot(R, R) * dot(Q, Q))) return false;
+    W = U + (dot(cross(A1 - U, Q), rq) / n) * R;
+    return true;
+}
+
+// --- depth texture of the refraction pass, in that pass's eye space -------------------------
+uniform sampler2D osgWater_RefractionDepth;
+uniform mat4 osgWater_RefractionProj;
+uniform mat4 osgWater_RefractionInvProj;
+
+// texture coordinate of an eye-space point of the refraction pass; false behind the camera
+bool owRefractionTexCoord(vec3 P, out vec2 tc)
+{
+    vec4 c = osgWater_RefractionProj * vec4(P, 1.0);
+    tc = vec2(0.5);
+    if (!(c.w > 1e-6)) return false;
+    tc = c.xy / c.w * 0.5 + 0.5;
+    return true;
+}
+
+// A: the first surface on the camera ray through P (A = P Z / P.z); false for sky (depth 1.0)
+bool owBottomAlongRay(vec3 P, out vec3 A)
+{
+    A = P;
+    vec2 tc;
+    if (!(P.z < -1e-6) || !owRefractionTexCoord(P, tc)) return false;
+    float d = texture(osgWater_RefractionDepth, tc).r;
+    if (d >= 0.999999) return false;
+    vec4 e = osgWater_RefractionInvProj * vec4(vec3(tc, d) * 2.0 - 1.0, 1.0);
+    float Z = e.z / e.w;
+    A = P * (Z / P.z);
+    return true;
+}
+
+struct owBottomHit { bool valid; vec3 W; vec3 A; float error; };
+
+// SCCG 2008 eq. 1: W = U + clamp(scale dv, 0, maxDv) R
+owBottomHit owOneStepSearch(vec3 U, vec3 R, float scale, float maxDv)
+{
+    owBottomHit r = owBottomHit(false, U, U, 0.0);
+    vec3 A1;
+    if (!owBottomAlongRay(U, A1)) return r;
+    float dv = clamp(scale * length(A1 - U), 0.0, maxDv);
+    r.valid = true;
+    r.W = U + dv * R;
+    r.A = A1;
+    return r;
+}
+
+// Thesis §7.1: candidates W_1..W_steps, keep the one with the smallest |A - W|.
+owBottomHit owIterativeSearch(vec3 U, vec3 R, int steps)
+{
+    owBottomHit best = owBottomHit(false, U, U, 1e30);
+    vec3 Aprev;
+    if (!owBottomAlongRay(U, Aprev)) { best.error = 0.0; return best; }
+    vec3 W = U + length(Aprev - U) * R;
+    for (int i = 1; i <= 8; ++i) {
+        if (i > steps) break;
+        vec3 A;
+        if (!owBottomAlongRay(W, A)) break;
+        float e = length(A - W);
+        if (e < best.error) { best.valid = true; best.W = W; best.A = A; best.error = e; }
+        if (i == steps) break;
+        vec3 Wn;
+        vec3 Q = A - Aprev;
+        bool ok = owLineIntersection(U, R, Aprev, Q, Wn)
+               && length(Wn - Aprev) + length(A - Wn) <= length(Q) * 1.001 + 1e-5;
+        if (!ok) {
+            float zn = abs(W.z) > abs(A.z) ? -1.0 : 1.0;
+            Wn = W + zn * e * R;
+        }
+        Aprev = A;
+        W = Wn;
+    }
+    if (!best.valid) best.error = 0.0;
+    return best;
+}

@@ -1,0 +1,16 @@
+#version 130
+// The kit's program for the water's scene (the WaterNode's children): textured, lit by one sun,
+// and clipped by the pass plane so the reflection and refraction passes split the scene.
+uniform vec4 osgWater_ClipPlane; // eye space; only active where GL_CLIP_DISTANCE0 is enabled
+
+out vec3 vNormalEye;
+out vec2 vTexCoord;
+
+void main()
+{
+    vec4 eye = gl_ModelViewMatrix * gl_Vertex;
+    vNormalEye = gl_NormalMatrix * gl_Normal;
+    vTexCoord = (gl_TextureMatrix[0] * gl_MultiTexCoord0).st;
+    gl_ClipDistance[0] = dot(osgWater_ClipPlane, eye);
+    gl_Position = gl_ProjectionMatrix * eye;
+}
