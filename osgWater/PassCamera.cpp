@@ -40,6 +40,7 @@ PassCamera::PassCamera(osg::Group* scene, osg::StateSet* sceneState, int texture
     setCullCallback(new PassCullCallback);
 
     _color = makeTexture(textureSize, GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE, true);
+    _color->setName("osgWater.passColor");
     attach(osg::Camera::COLOR_BUFFER, _color.get());
 
     osg::StateSet* ss = getOrCreateStateSet();

@@ -10,6 +10,7 @@ RefractionCamera::RefractionCamera(osg::Group* scene, osg::StateSet* sceneState,
 {
     setName("osgWater.RefractionCamera");
     _depth = makeTexture(textureSize, GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT, GL_FLOAT, false);
+    _depth->setName("osgWater.refractionDepth");
     attach(osg::Camera::DEPTH_BUFFER, _depth.get());
     // thesis fig. 3: clipped solids must not show their insides
     getOrCreateStateSet()->setAttributeAndModes(new osg::CullFace(osg::CullFace::BACK), osg::StateAttribute::ON);

@@ -18,6 +18,12 @@ osg::Texture2D* whiteTexture()
     p[0] = p[1] = p[2] = p[3] = 255;
     osg::Texture2D* t = new osg::Texture2D(img.get());
     t->setName("osgWater.white");
+    // OSG's default wrap is GL_CLAMP, which blends in the black border at s,t = 0: the very
+    // coordinate that geometry without texture coordinates samples
+    t->setWrap(osg::Texture::WRAP_S, osg::Texture::CLAMP_TO_EDGE);
+    t->setWrap(osg::Texture::WRAP_T, osg::Texture::CLAMP_TO_EDGE);
+    t->setFilter(osg::Texture::MIN_FILTER, osg::Texture::NEAREST);
+    t->setFilter(osg::Texture::MAG_FILTER, osg::Texture::NEAREST);
     return t;
 }
 

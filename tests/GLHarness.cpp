@@ -1,0 +1,239 @@
+#include "GLHarness.h"
+#include <osg/Material>
+#include <osg/Texture2D>
+#include <osg/GL>
+#include <osg/Notify>
+#include <cstdio>
+#include <osgDB/WriteFile>
+#include <algorithm>
+#include <cmath>
+
+namespace testing_gl {
+
+osg::ref_ptr<osg::GraphicsContext> createPbuffer(int width, int height, std::string& why)
+{
+    osg::ref_ptr<osg::GraphicsContext::Traits> traits = new osg::GraphicsContext::Traits;
+    traits->x = 0;
+    traits->y = 0;
+    traits->width = width;
+    traits->height = height;
+    traits->red = traits->green = traits->blue = traits->alpha = 8;
+    traits->depth = 24;
+    traits->windowDecoration = false;
+    traits->pbuffer = true;
+    traits->doubleBuffer = false;
+    traits->sharedContext = 0;
+    traits->readDISPLAY();
+    traits->setUndefinedScreenDetailsToDefaultScreen();
+    if (!std::getenv("DISPLAY")) {
+        why = "DISPLAY is not set";
+        return nullptr;
+    }
+    osg::ref_ptr<osg::GraphicsContext> gc = osg::GraphicsContext::createGraphicsContext(traits.get());
+    if (!gc.valid() || !gc->realize()) {
+        why = "pbuffer creation failed on DISPLAY=" + std::string(std::getenv("DISPLAY"));
+        return nullptr;
+    }
+    return gc;
+}
+
+osg::Texture2D* attachFloatTarget(osg::Camera* camera, osg::GraphicsContext* gc, int w, int h)
+{
+    osg::Texture2D* t = new osg::Texture2D;
+    t->setName("mainTarget");
+    t->setTextureSize(w, h);
+    t->setInternalFormat(GL_RGBA32F_ARB);
+    t->setSourceFormat(GL_RGBA);
+    t->setSourceType(GL_FLOAT);
+    t->setFilter(osg::Texture::MIN_FILTER, osg::Texture::NEAREST);
+    t->setFilter(osg::Texture::MAG_FILTER, osg::Texture::NEAREST);
+    camera->setGraphicsContext(gc);
+    camera->setViewport(0, 0, w, h);
+    camera->setRenderTargetImplementation(osg::Camera::FRAME_BUFFER_OBJECT);
+    camera->attach(osg::Camera::COLOR_BUFFER, t);
+    camera->attach(osg::Camera::DEPTH_BUFFER, GL_DEPTH_COMPONENT24);
+    return t;
+}
+
+Harness::Harness(int width, int height) : _w(width), _h(height)
+{
+    _gc = createPbuffer(width, height, _why);
+    if (!_gc.valid()) return;
+    _viewer = new osgViewer::Viewer;
+    _viewer->setThreadingModel(osgViewer::ViewerBase::SingleThreaded);
+    _viewer->setReleaseContextAtEndOfFrameHint(false);
+    _target = attachFloatTarget(_viewer->getCamera(), _gc.get(), width, height);
+    _viewer->getCamera()->setClearColor(osg::Vec4(0.2f, 0.3f, 0.8f, 1.0f));
+    _viewer->getCamera()->setComputeNearFarMode(osg::CullSettings::DO_NOT_COMPUTE_NEAR_FAR);
+}
+
+void Harness::lookAt(const osg::Vec3d& eye, const osg::Vec3d& center, double fovy)
+{
+    _viewer->getCamera()->setViewMatrixAsLookAt(eye, center, osg::Vec3d(0.0, 0.0, 1.0));
+    _viewer->getCamera()->setProjectionMatrixAsPerspective(fovy, double(_w) / double(_h), 0.05, 500.0);
+}
+
+void Harness::frame(double simulationTime)
+{
+    _viewer->frame(simulationTime);
+}
+
+osg::ref_ptr<osg::Image> readTexture(osg::GraphicsContext* gc, osg::Texture2D* texture)
+{
+    gc->makeCurrent();
+    const GLenum before = glGetError(); // errors the frame left behind are the frame's, not ours
+    EXPECT_EQ(before, GLenum(GL_NO_ERROR)) << "GL error left by the frame before reading " << texture->getName();
+    const unsigned int id = gc->getState()->getContextID();
+    osg::Texture::TextureObject* to = texture->getTextureObject(id);
+    osg::ref_ptr<osg::Image> img = new osg::Image;
+    if (to) {
+        const int w = texture->getTextureWidth(), h = texture->getTextureHeight();
+        img->allocateImage(w, h, 1, GL_RGBA, GL_FLOAT);
+        GLint bound = 0; // restored afterwards: osg::State believes it is still bound
+        glGetIntegerv(GL_TEXTURE_BINDING_2D, &bound);
+        glBindTexture(GL_TEXTURE_2D, to->id());
+        const GLint fmt = texture->getInternalFormat();
+        if (fmt == GL_DEPTH_COMPONENT24 || fmt == GL_DEPTH_COMPONENT) {
+            std::vector<float> depth(size_t(w) * h);
+            glGetTexImage(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT, GL_FLOAT, depth.data());
+            float* p = reinterpret_cast<float*>(img->data());
+            for (size_t i = 0; i < depth.size(); ++i) p[4 * i] = p[4 * i + 1] = p[4 * i + 2] = p[4 * i + 3] = depth[i];
+        } else {
+            glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_FLOAT, img->data());
+        }
+        glBindTexture(GL_TEXTURE_2D, GLuint(bound));
+        const GLenum err = glGetError();
+        EXPECT_EQ(err, GLenum(GL_NO_ERROR)) << "reading back " << texture->getName();
+    }
+    // leave it current: the viewer (release hint off) does not make it current again
+    if (to && std::getenv("OSGWATER_TEST_DUMP")) dumpImage(img.get(), texture->getName().empty() ? "texture" : texture->getName());
+    return to ? img : nullptr;
+}
+
+void dumpImage(const osg::Image* img, const std::string& name)
+{
+    // 8-bit copy for looking at failures: OSGWATER_TEST_DUMP=<folder>
+    static int counter = 0;
+    osg::ref_ptr<osg::Image> out = new osg::Image;
+    out->allocateImage(img->s(), img->t(), 1, GL_RGBA, GL_UNSIGNED_BYTE);
+    for (int y = 0; y < img->t(); ++y)
+        for (int x = 0; x < img->s(); ++x)
+            for (int k = 0; k < 4; ++k)
+                out->data(x, y)[k] = (unsigned char)(std::min(std::max(pixel(img, x, y)[k], 0.0f), 1.0f) * 255.0f + 0.5f);
+    const std::string dir = std::getenv("OSGWATER_TEST_DUMP");
+    osgDB::writeImageFile(*out, dir + "/" + std::to_string(counter++) + "_" + name + ".png");
+}
+
+osg::ref_ptr<osg::Image> Harness::readTexture(osg::Texture2D* texture) { return testing_gl::readTexture(_gc.get(), texture); }
+
+namespace {
+osg::Material* unlit(const osg::Vec4& color)
+{
+    osg::Material* m = new osg::Material;
+    m->setEmission(osg::Material::FRONT_AND_BACK, color);
+    m->setAmbient(osg::Material::FRONT_AND_BACK, osg::Vec4(0, 0, 0, color.a()));
+    m->setDiffuse(osg::Material::FRONT_AND_BACK, osg::Vec4(0, 0, 0, color.a()));
+    return m;
+}
+}
+
+osg::Geode* emissiveQuad(const osg::Vec3& a, const osg::Vec3& b, const osg::Vec3& c, const osg::Vec3& d,
+                         const osg::Vec4& color)
+{
+    osg::Geometry* g = new osg::Geometry;
+    osg::Vec3Array* v = new osg::Vec3Array;
+    v->push_back(a); v->push_back(b); v->push_back(c); v->push_back(d);
+    g->setVertexArray(v);
+    osg::Vec3Array* n = new osg::Vec3Array(1);
+    (*n)[0] = (b - a) ^ (d - a);
+    (*n)[0].normalize();
+    g->setNormalArray(n, osg::Array::BIND_OVERALL);
+    g->addPrimitiveSet(new osg::DrawArrays(GL_QUADS, 0, 4));
+    osg::Geode* geode = new osg::Geode;
+    geode->addDrawable(g);
+    geode->getOrCreateStateSet()->setAttribute(unlit(color));
+    return geode;
+}
+
+osg::Geode* checkerPlane(float z, float size, float cell)
+{
+    // one texel per cell, repeated: exact cell edges with nearest filtering
+    const int n = 2;
+    osg::ref_ptr<osg::Image> img = new osg::Image;
+    img->allocateImage(n, n, 1, GL_RGBA, GL_UNSIGNED_BYTE);
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+            unsigned char* p = img->data(i, j);
+            const unsigned char c = ((i + j) % 2 == 0) ? 255 : 0;
+            p[0] = p[1] = p[2] = c;
+            p[3] = 255;
+        }
+    osg::Texture2D* tex = new osg::Texture2D(img.get());
+    tex->setFilter(osg::Texture::MIN_FILTER, osg::Texture::NEAREST);
+    tex->setFilter(osg::Texture::MAG_FILTER, osg::Texture::NEAREST);
+    tex->setWrap(osg::Texture::WRAP_S, osg::Texture::REPEAT);
+    tex->setWrap(osg::Texture::WRAP_T, osg::Texture::REPEAT);
+    tex->setResizeNonPowerOfTwoHint(false);
+
+    const float h = 0.5f * size;
+    osg::Geometry* g = new osg::Geometry;
+    osg::Vec3Array* v = new osg::Vec3Array;
+    v->push_back(osg::Vec3(-h, -h, z)); v->push_back(osg::Vec3(h, -h, z));
+    v->push_back(osg::Vec3(h, h, z));   v->push_back(osg::Vec3(-h, h, z));
+    osg::Vec2Array* t = new osg::Vec2Array;
+    // texture coordinate = position / (2 cell): one repeat of the 2x2 image per 2 cells
+    for (const osg::Vec3& p : *v) t->push_back(osg::Vec2(p.x() / (2.0f * cell), p.y() / (2.0f * cell)));
+    g->setVertexArray(v);
+    g->setTexCoordArray(0, t);
+    osg::Vec3Array* n3 = new osg::Vec3Array(1);
+    (*n3)[0].set(0, 0, 1);
+    g->setNormalArray(n3, osg::Array::BIND_OVERALL);
+    g->addPrimitiveSet(new osg::DrawArrays(GL_QUADS, 0, 4));
+    osg::Geode* geode = new osg::Geode;
+    geode->addDrawable(g);
+    geode->getOrCreateStateSet()->setAttribute(unlit(osg::Vec4(1, 1, 1, 1)));
+    geode->getOrCreateStateSet()->setTextureAttribute(0, tex);
+    return geode;
+}
+
+float checkerAt(double x, double y, float cell)
+{
+    const long i = long(std::floor(x / cell)), j = long(std::floor(y / cell));
+    return ((i + j) % 2 == 0) ? 1.0f : 0.0f;
+}
+
+bool allFinite(const osg::Image* img)
+{
+    const float* p = reinterpret_cast<const float*>(img->data());
+    const size_t n = size_t(img->s()) * img->t() * 4;
+    for (size_t i = 0; i < n; ++i)
+        if (!std::isfinite(p[i])) return false;
+    return true;
+}
+
+}
+
+namespace {
+// Any shader that fails to compile or link fails the running test: a missing water program
+// would otherwise leave plausible-looking (finite, scene-only) images behind.
+class ShaderErrorsFail : public osg::NotifyHandler
+{
+public:
+    void notify(osg::NotifySeverity severity, const char* message) override
+    {
+        const std::string m(message);
+        if ((m.find("glCompileShader") != std::string::npos || m.find("glLinkProgram") != std::string::npos)
+            && m.find("FAILED") != std::string::npos)
+            ADD_FAILURE() << "GLSL error: " << m;
+        if (severity <= osg::WARN) std::fputs(message, stderr);
+    }
+};
+struct InstallHandler : public ::testing::Environment {
+    void SetUp() override
+    {
+        osg::setNotifyLevel(osg::WARN);
+        osg::setNotifyHandler(new ShaderErrorsFail);
+    }
+};
+::testing::Environment* const installed = ::testing::AddGlobalTestEnvironment(new InstallHandler);
+}

@@ -1,0 +1,76 @@
+// Headless rendering for the tests: a pbuffer context (Xvfb + Mesa on CI), a main camera that
+// renders into a float texture, and read-back of any texture of that context.
+#pragma once
+#include <osgViewer/Viewer>
+#include <osg/Texture2D>
+#include <osg/Geometry>
+#include <osg/Image>
+#include <gtest/gtest.h>
+#include <cstdlib>
+#include <string>
+
+namespace testing_gl {
+
+//! A pbuffer context, or nullptr with the reason in `why`.
+osg::ref_ptr<osg::GraphicsContext> createPbuffer(int width, int height, std::string& why);
+
+//! GL context missing: a failure when CI is set (never a silent green), a skip on a developer's machine.
+#define REQUIRE_GL(harness)                                                                          \
+    do {                                                                                             \
+        if (!(harness).ok()) {                                                                       \
+            if (std::getenv("CI")) FAIL() << "CI is set and no GL context: " << (harness).why();     \
+            GTEST_SKIP() << "no GL context (" << (harness).why() << "); set DISPLAY or use xvfb-run"; \
+        }                                                                                            \
+    } while (0)
+
+class Harness
+{
+public:
+    Harness(int width, int height);
+    bool ok() const { return _gc.valid(); }
+    const std::string& why() const { return _why; }
+    osgViewer::Viewer* viewer() { return _viewer.get(); }
+    osg::Camera* camera() { return _viewer->getCamera(); }
+    osg::GraphicsContext* context() { return _gc.get(); }
+    int width() const { return _w; }
+    int height() const { return _h; }
+
+    void setScene(osg::Node* node) { _viewer->setSceneData(node); }
+    void lookAt(const osg::Vec3d& eye, const osg::Vec3d& center, double fovy = 45.0);
+    void frame(double simulationTime);
+    //! The main camera's float colour target, read back after the last frame.
+    osg::ref_ptr<osg::Image> readColor() { return readTexture(_target.get()); }
+    //! Any texture on this context as float RGBA (depth textures: depth in every channel).
+    osg::ref_ptr<osg::Image> readTexture(osg::Texture2D* texture);
+
+private:
+    int _w, _h;
+    std::string _why;
+    osg::ref_ptr<osg::GraphicsContext> _gc;
+    osg::ref_ptr<osgViewer::Viewer> _viewer;
+    osg::ref_ptr<osg::Texture2D> _target;
+};
+
+//! Binds a float RGBA texture target to a camera (FBO) on the given context.
+osg::Texture2D* attachFloatTarget(osg::Camera* camera, osg::GraphicsContext* gc, int w, int h);
+osg::ref_ptr<osg::Image> readTexture(osg::GraphicsContext* gc, osg::Texture2D* texture);
+
+// --- analytic test scenes ------------------------------------------------------------------------
+//! An unlit (emissive) quad from four corners: its pixels are exactly `color`.
+osg::Geode* emissiveQuad(const osg::Vec3& a, const osg::Vec3& b, const osg::Vec3& c, const osg::Vec3& d,
+                         const osg::Vec4& color);
+//! A horizontal square at height z, side `size`, with an unlit black/white checkerboard of
+//! `cell` metres (cell (i, j) white when i + j is even; nearest filtering).
+osg::Geode* checkerPlane(float z, float size, float cell);
+//! Checker colour (1 white, 0 black) at (x, y) for a board made by checkerPlane.
+float checkerAt(double x, double y, float cell);
+
+inline const float* pixel(const osg::Image* img, int x, int y)
+{
+    return reinterpret_cast<const float*>(img->data(x, y));
+}
+bool allFinite(const osg::Image* img);
+//! Writes an 8-bit PNG of a float image to $OSGWATER_TEST_DUMP (debugging aid).
+void dumpImage(const osg::Image* img, const std::string& name);
+
+}

@@ -1,0 +1,197 @@
+// Optics (the CPU mirror of shaders/optics.glsl) against closed forms and hard cases.
+#include <osgWater/Optics>
+#include <gtest/gtest.h>
+#include <cmath>
+
+using namespace osgWater::optics;
+
+namespace {
+const float kAir = 1.0f, kWater = 1.333f;
+glm::vec3 dirFromAngle(float theta) { return glm::vec3(std::sin(theta), 0.0f, -std::cos(theta)); } // downwards
+bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+}
+
+TEST(Optics, RefractObeysSnellsLaw)
+{
+    const glm::vec3 N(0.0f, 0.0f, 1.0f);
+    for (float deg = 0.0f; deg < 89.9f; deg += 7.5f) {
+        const float ti = deg * float(M_PI) / 180.0f;
+        const glm::vec3 T = refract(dirFromAngle(ti), N, kAir / kWater);
+        ASSERT_NEAR(glm::length(T), 1.0f, 1e-5f);
+        const float tt = std::acos(-T.z);
+        EXPECT_NEAR(kAir * std::sin(ti), kWater * std::sin(tt), 1e-5f) << deg;
+        EXPECT_GE(T.x, 0.0f); // stays in the plane of incidence, same side
+        EXPECT_NEAR(T.y, 0.0f, 1e-6f);
+    }
+}
+
+TEST(Optics, TotalInternalReflectionThreshold)
+{
+    const float crit = criticalAngle(kWater, kAir);
+    EXPECT_NEAR(crit, std::asin(1.0f / 1.333f), 1e-6f);
+    const glm::vec3 N(0.0f, 0.0f, -1.0f); // from below, the normal faces down into the water
+    auto up = [](float t) { return glm::vec3(std::sin(t), 0.0f, std::cos(t)); };
+    EXPECT_GT(glm::length(refract(up(crit - 1e-3f), N, kWater / kAir)), 0.99f);
+    EXPECT_EQ(glm::length(refract(up(crit + 1e-3f), N, kWater / kAir)), 0.0f);
+    EXPECT_FALSE(totalInternalReflection(std::cos(crit - 1e-3f), kWater, kAir));
+    EXPECT_TRUE(totalInternalReflection(std::cos(crit + 1e-3f), kWater, kAir));
+    EXPECT_FALSE(totalInternalReflection(0.0f, kAir, kWater)); // never from air into water
+    EXPECT_FLOAT_EQ(fresnelExact(std::cos(crit + 1e-3f), kWater, kAir), 1.0f);
+}
+
+TEST(Optics, FresnelAtNormalAndGrazingIncidence)
+{
+    const float f = normalReflectance(kAir, kWater);
+    EXPECT_NEAR(f, std::pow((1.0f - 1.333f) / (1.0f + 1.333f), 2.0f), 1e-7f); // eq. 8
+    EXPECT_NEAR(f, 0.0204f, 1e-4f);
+    EXPECT_NEAR(fresnelExact(1.0f, kAir, kWater), f, 1e-6f);
+    EXPECT_NEAR(fresnelExact(0.0f, kAir, kWater), 1.0f, 1e-6f);
+    EXPECT_NEAR(fresnelSchlick(1.0f, f, 5.0f), f, 1e-7f);   // eq. 7 at 0 degrees
+    EXPECT_NEAR(fresnelSchlick(0.0f, f, 5.0f), 1.0f, 1e-7f); // and at 90 degrees
+    EXPECT_NEAR(fresnelPower(1.0f, 5.0f), 0.0f, 1e-7f);
+    EXPECT_NEAR(fresnelPower(0.0f, 5.0f), 1.0f, 1e-7f);
+    // Brewster angle: p-polarised reflectance vanishes, so F = rs^2 / 2 there
+    const float tb = std::atan(kWater / kAir);
+    const float tt = std::asin(std::sin(tb) / kWater);
+    const float rs = std::sin(tt - tb) / std::sin(tt + tb);
+    EXPECT_NEAR(fresnelExact(std::cos(tb), kAir, kWater), 0.5f * rs * rs, 1e-5f);
+    // clamped inputs never leave [0, 1]
+    EXPECT_NEAR(fresnelSchlick(-0.5f, f, 5.0f), 1.0f, 1e-6f);
+    EXPECT_NEAR(fresnelSchlick(1.5f, f, 5.0f), f, 1e-6f);
+}
+
+TEST(Optics, AttenuationAndMixFollowEquations4to9)
+{
+    EXPECT_FLOAT_EQ(attenuation(0.5f, 0.0f), 1.0f);
+    EXPECT_NEAR(attenuation(0.5f, 2.0f), std::exp(-1.0f), 1e-7f);
+    EXPECT_EQ(attenuation(0.5f, -1.0f), 0.0f);      // no bottom: all water colour
+    EXPECT_EQ(attenuation(0.5f, NAN), 0.0f);
+    const glm::vec3 water(0.0f, 0.2f, 0.1f), bed(1.0f, 0.8f, 0.6f), sky(0.5f, 0.6f, 0.9f);
+    const glm::vec3 t = waterTint(bed, water, 0.25f);
+    EXPECT_NEAR(t.x, 0.25f, 1e-6f);
+    EXPECT_NEAR(t.y, 0.2f + 0.25f * 0.6f, 1e-6f);
+    const glm::vec3 c = fresnelMix(t, sky, 0.4f);
+    EXPECT_NEAR(c.z, t.z + 0.4f * (sky.z - t.z), 1e-6f);
+}
+
+TEST(Optics, LineIntersectionAndNearParallelLines)
+{
+    glm::vec3 W;
+    ASSERT_TRUE(lineIntersection(glm::vec3(0.0f), glm::vec3(1.0f, 0.0f, 0.0f), glm::vec3(2.0f, -1.0f, 0.0f),
+                                 glm::vec3(0.0f, 1.0f, 0.0f), W));
+    EXPECT_NEAR(W.x, 2.0f, 1e-6f);
+    EXPECT_NEAR(W.y, 0.0f, 1e-6f);
+    const glm::vec3 before(7.0f, 7.0f, 7.0f);
+    W = before;
+    EXPECT_FALSE(lineIntersection(glm::vec3(0.0f), glm::vec3(1.0f, 0.0f, 0.0f), glm::vec3(0.0f, 1.0f, 0.0f),
+                                  glm::vec3(1.0f, 1e-6f, 0.0f), W));
+    EXPECT_EQ(W, before);
+    EXPECT_FALSE(lineIntersection(glm::vec3(0.0f), glm::vec3(1.0f, 0.0f, 0.0f), glm::vec3(0.0f, 1.0f, 0.0f),
+                                  glm::vec3(0.0f), W)); // zero-length Q
+}
+
+TEST(Optics, ZeroLengthVectorsAndGrazingNormals)
+{
+    const glm::vec3 fb(0.0f, 0.0f, 1.0f);
+    EXPECT_EQ(safeNormalize(glm::vec3(0.0f), fb), fb);
+    EXPECT_EQ(safeNormalize(glm::vec3(NAN, 0.0f, 0.0f), fb), fb);
+    const glm::vec3 E = glm::normalize(glm::vec3(1.0f, 0.0f, 1e-4f)); // eye on the water plane
+    const glm::vec3 N = glm::normalize(glm::vec3(0.3f, 0.0f, 1.0f));  // wave facing away from it
+    const glm::vec3 Nf = faceNormal(N, E);
+    EXPECT_GE(glm::dot(Nf, E), 1e-3f - 1e-6f);
+    EXPECT_NEAR(glm::length(Nf), 1.0f, 1e-5f);
+    const glm::vec3 R = refract(-E, Nf, kAir / kWater);
+    EXPECT_TRUE(finite(R));
+    EXPECT_NEAR(glm::length(R), 1.0f, 1e-4f);
+    EXPECT_LT(R.z, 0.0f); // still goes down into the water
+}
+
+namespace {
+// A flat bottom z = -depth seen by a camera at the origin of its eye space (looking down -Z,
+// tilted): the depth lookup returns the exact eye-space Z of the bottom along the ray through P.
+struct FlatBottom {
+    glm::vec3 n;  // bottom plane normal (eye space)
+    float c;      // plane: dot(n, x) = c
+    DepthSample operator()(const glm::vec3& P) const
+    {
+        const glm::vec3 d = glm::normalize(P);
+        const float den = glm::dot(n, d);
+        if (std::fabs(den) < 1e-9f) return { false, 0.0f };
+        const float t = c / den;
+        if (t <= 0.0f) return { false, 0.0f };
+        return { true, (t * d).z };
+    }
+};
+}
+
+TEST(Optics, IterativeSearchConvergesToExactHitOnFlatBottom)
+{
+    // eye space of a camera 3 m above water looking 35 degrees down; water plane and bottom 2 m below it
+    const float pitch = 35.0f * float(M_PI) / 180.0f;
+    const glm::vec3 up(0.0f, std::cos(pitch), std::sin(pitch)); // world z in eye space
+    const float eyeH = 3.0f, depth = 2.0f;
+    FlatBottom bottom{ up, -(eyeH + depth) };
+    DepthLookup lookup = std::cref(bottom);
+    double worstIter = 0.0, worstOne = 0.0;
+    for (float sx = -0.4f; sx <= 0.41f; sx += 0.2f)
+        for (float sy = -0.5f; sy <= 0.01f; sy += 0.1f) {
+            const glm::vec3 ray = glm::normalize(glm::vec3(sx, sy, -1.0f));
+            const float t = -eyeH / glm::dot(up, ray);
+            ASSERT_GT(t, 0.0f);
+            const glm::vec3 U = t * ray;
+            const glm::vec3 R = refract(ray, up, kAir / kWater);
+            // exact hit of U + s R with the bottom
+            const float s = (-(eyeH + depth) - glm::dot(up, U)) / glm::dot(up, R);
+            const glm::vec3 X = U + s * R;
+            const BottomHit it = iterativeSearch(U, R, 3, lookup);
+            ASSERT_TRUE(it.valid);
+            worstIter = std::max(worstIter, double(glm::length(it.W - X)));
+            EXPECT_LT(it.error, 1e-3f);
+            const BottomHit one = oneStepSearch(U, R, 1.0f, 100.0f, lookup);
+            ASSERT_TRUE(one.valid);
+            worstOne = std::max(worstOne, double(glm::length(one.W - X)));
+        }
+    EXPECT_LT(worstIter, 2e-3);     // exact up to float rounding: planar bottom, coplanar lines
+    EXPECT_GT(worstOne, 100.0 * worstIter); // the one-step guess is much worse
+}
+
+TEST(Optics, IterativeSearchNeverWorseWithMoreSteps)
+{
+    // a sloping bottom (shore): error must not grow with steps since the best candidate is kept
+    const glm::vec3 n = glm::normalize(glm::vec3(0.3f, 0.8f, 0.5f));
+    FlatBottom bottom{ n, -6.0f };
+    DepthLookup lookup = std::cref(bottom);
+    const glm::vec3 U(0.3f, -1.5f, -4.0f);
+    const glm::vec3 R = glm::normalize(glm::vec3(0.1f, -0.9f, -0.6f));
+    float prev = INFINITY;
+    for (int steps = 1; steps <= 8; ++steps) {
+        const BottomHit h = iterativeSearch(U, R, steps, lookup);
+        ASSERT_TRUE(h.valid);
+        EXPECT_LE(h.error, prev + 1e-6f) << steps;
+        prev = h.error;
+    }
+}
+
+TEST(Optics, SkyIsAMissNotABottom)
+{
+    DepthLookup sky = [](const glm::vec3&) { return DepthSample{ false, 0.0f }; };
+    const glm::vec3 U(0.0f, 0.0f, -5.0f), R(0.0f, -0.6f, -0.8f);
+    EXPECT_FALSE(iterativeSearch(U, R, 3, sky).valid);
+    EXPECT_FALSE(oneStepSearch(U, R, 1.0f, 10.0f, sky).valid);
+    // a point on or behind the camera plane has no texel: a miss, not a division by zero
+    glm::vec3 A;
+    DepthLookup any = [](const glm::vec3&) { return DepthSample{ true, -3.0f }; };
+    EXPECT_FALSE(bottomAlongRay(glm::vec3(1.0f, 1.0f, 0.0f), any, A));
+    EXPECT_FALSE(bottomAlongRay(glm::vec3(1.0f, 1.0f, 2.0f), any, A));
+}
+
+TEST(Optics, OneStepClampsAndScalesDepth)
+{
+    DepthLookup deep = [](const glm::vec3& P) { return DepthSample{ true, P.z - 50.0f }; };
+    const glm::vec3 U(0.0f, 0.0f, -5.0f), R(0.0f, 0.0f, -1.0f);
+    const BottomHit h = oneStepSearch(U, R, 1.0f, 20.0f, deep);
+    ASSERT_TRUE(h.valid);
+    EXPECT_NEAR(glm::length(h.W - U), 20.0f, 1e-4f);
+    const BottomHit half = oneStepSearch(U, R, 0.25f, 20.0f, deep);
+    EXPECT_NEAR(glm::length(half.W - U), 12.5f, 1e-4f);
+}

@@ -1,0 +1,147 @@
+// Pass matrices, without a GPU: mirror, FOV extension, near/far, refraction-camera rotation, planes.
+#include <osgWater/PassMath>
+#include <osg/io_utils>
+#include <gtest/gtest.h>
+#include <cmath>
+
+using namespace osgWater;
+
+namespace {
+osg::Matrixd lookAt(const osg::Vec3d& eye, const osg::Vec3d& center)
+{
+    return osg::Matrixd::lookAt(eye, center, osg::Vec3d(0.0, 0.0, 1.0));
+}
+osg::Vec2d toNdc(const osg::Vec3d& p, const osg::Matrixd& mvp)
+{
+    const osg::Vec4d c = osg::Vec4d(p, 1.0) * mvp;
+    return osg::Vec2d(c.x() / c.w(), c.y() / c.w());
+}
+}
+
+TEST(PassMath, MirrorReflectsAboutTheWaterLevel)
+{
+    const osg::Matrixd m = mirrorMatrix(1.5);
+    const osg::Vec3d p = osg::Vec3d(2.0, -3.0, 4.0) * m;
+    EXPECT_NEAR(p.x(), 2.0, 1e-12);
+    EXPECT_NEAR(p.y(), -3.0, 1e-12);
+    EXPECT_NEAR(p.z(), -1.0, 1e-12);
+    const osg::Vec3d q = osg::Vec3d(7.0, 1.0, 1.5) * m; // points on the plane stay put
+    EXPECT_NEAR(q.z(), 1.5, 1e-12);
+}
+
+TEST(PassMath, MirroredCameraSeesTheMirrorImageWhereTheEyeSeesTheSurface)
+{
+    // the reflection lookup is exact for flat water: U + c R projects through the mirrored view onto U's pixel
+    const osg::Matrixd view = lookAt(osg::Vec3d(0, -10, 4), osg::Vec3d(0, 10, 0));
+    const osg::Matrixd proj = osg::Matrixd::perspective(45.0, 1.0, 0.1, 100.0);
+    const osg::Vec3d eye(0, -10, 4), U(1.0, 6.0, 0.0);
+    osg::Vec3d I = U - eye;
+    I.normalize();
+    const osg::Vec3d Rr(I.x(), I.y(), -I.z());
+    for (double c : { 0.5, 1.0, 10.0 }) {
+        const osg::Vec2d a = toNdc(U + Rr * c, mirrorMatrix(0.0) * view * proj);
+        const osg::Vec2d b = toNdc(U, view * proj);
+        EXPECT_NEAR(a.x(), b.x(), 1e-9);
+        EXPECT_NEAR(a.y(), b.y(), 1e-9);
+    }
+}
+
+TEST(PassMath, ExtendedFovWidensTangentsByTheFactor)
+{
+    const osg::Matrixd proj = osg::Matrixd::perspective(40.0, 1.5, 0.5, 200.0);
+    const osg::Matrixd ext = extendFov(proj, 1.5);
+    double l0, r0, b0, t0, n0, f0, l1, r1, b1, t1, n1, f1;
+    ASSERT_TRUE(proj.getFrustum(l0, r0, b0, t0, n0, f0));
+    ASSERT_TRUE(ext.getFrustum(l1, r1, b1, t1, n1, f1));
+    EXPECT_NEAR(r1 / n1, 1.5 * r0 / n0, 1e-9);
+    EXPECT_NEAR(t1 / n1, 1.5 * t0 / n0, 1e-9);
+    EXPECT_NEAR(n1, n0, 1e-6);
+    EXPECT_NEAR(f1, f0, 1e-3);
+}
+
+TEST(PassMath, WithNearFarKeepsTheFieldOfView)
+{
+    const osg::Matrixd proj = osg::Matrixd::perspective(60.0, 1.0, 1.0, 1000.0);
+    const osg::Matrixd p2 = withNearFar(proj, 0.25, 40.0);
+    double l, r, b, t, n, f;
+    ASSERT_TRUE(p2.getFrustum(l, r, b, t, n, f));
+    EXPECT_NEAR(n, 0.25, 1e-9);
+    EXPECT_NEAR(f, 40.0, 1e-6);
+    EXPECT_NEAR(t / n, std::tan(osg::DegreesToRadians(30.0)), 1e-9);
+    const osg::Matrixd o = withNearFar(osg::Matrixd::ortho(-2, 2, -1, 1, 0, 10), 1.0, 5.0);
+    ASSERT_TRUE(o.getOrtho(l, r, b, t, n, f));
+    EXPECT_NEAR(r, 2.0, 1e-9);
+    EXPECT_NEAR(n, 1.0, 1e-9);
+    EXPECT_NEAR(f, 5.0, 1e-9);
+}
+
+TEST(PassMath, NearFarEnclosesTheBound)
+{
+    const osg::Matrixd view = lookAt(osg::Vec3d(0, -50, 0), osg::Vec3d(0, 0, 0));
+    double n, f;
+    ASSERT_TRUE(nearFarForBound(view, osg::BoundingSphere(osg::Vec3(0, 0, 0), 10.0f), n, f));
+    EXPECT_NEAR(n, 40.0, 1e-6);
+    EXPECT_GE(f, 60.0);
+    EXPECT_LT(f, 60.1);
+    ASSERT_TRUE(nearFarForBound(view, osg::BoundingSphere(osg::Vec3(0, -50, 0), 10.0f), n, f)); // eye inside
+    EXPECT_GT(n, 0.0);
+    EXPECT_FALSE(nearFarForBound(view, osg::BoundingSphere(osg::Vec3(0, -100, 0), 10.0f), n, f)); // behind
+}
+
+TEST(PassMath, PlaneToEyeGivesTheSameSignedDistance)
+{
+    const osg::Matrixd view = lookAt(osg::Vec3d(3, -7, 2), osg::Vec3d(1, 5, -1));
+    const osg::Vec4d plane(0.0, 0.0, -1.0, 0.25); // keep z <= 0.25
+    const osg::Vec4d pe = planeToEye(plane, view);
+    for (const osg::Vec3d& p : { osg::Vec3d(1, 2, 3), osg::Vec3d(-4, 0, -2), osg::Vec3d(0, 0, 0.25) }) {
+        const osg::Vec3d e = p * view;
+        const double local = plane.x() * p.x() + plane.y() * p.y() + plane.z() * p.z() + plane.w();
+        const double eye = pe.x() * e.x() + pe.y() * e.y() + pe.z() * e.z() + pe.w();
+        EXPECT_NEAR(local, eye, 1e-9);
+    }
+}
+
+TEST(PassMath, RefractionRotationTurnsTheBottomRayOntoItsRefraction)
+{
+    const osg::Matrixd view = lookAt(osg::Vec3d(0, -20, 5), osg::Vec3d(0, 0, 0));
+    const osg::Matrixd proj = osg::Matrixd::perspective(45.0, 1.0, 0.1, 100.0);
+    const double eta = 1.0 / 1.333;
+    const osg::Matrixd rv = rotatedRefractionView(view, proj, 0.0, eta);
+    // bottom-centre ray of both cameras
+    auto bottomRay = [&](const osg::Matrixd& v, osg::Vec3d& origin) {
+        const osg::Matrixd inv = osg::Matrixd::inverse(v * proj);
+        const osg::Vec3d a = osg::Vec3d(0, -1, -1) * inv, b = osg::Vec3d(0, -1, 1) * inv;
+        origin = eyePosition(v);
+        osg::Vec3d d = b - a;
+        d.normalize();
+        return d;
+    };
+    osg::Vec3d c0, c1;
+    const osg::Vec3d I = bottomRay(view, c0), R = bottomRay(rv, c1);
+    // eq. 2 in closed form: sin(theta_t) = eta sin(theta_i), measured from the vertical
+    const double si = std::sqrt(I.x() * I.x() + I.y() * I.y());
+    const double st = std::sqrt(R.x() * R.x() + R.y() * R.y());
+    EXPECT_NEAR(st, eta * si, 1e-9);
+    EXPECT_LT(R.z(), 0.0);
+    // both rays pass through O on the water (eq. 1): the rotation is about O
+    const double t0 = -c0.z() / I.z(), t1 = -c1.z() / R.z();
+    const osg::Vec3d O0 = c0 + I * t0, O1 = c1 + R * t1;
+    EXPECT_NEAR((O0 - O1).length(), 0.0, 1e-6);
+    EXPECT_NEAR((c0 - O0).length(), (c1 - O1).length(), 1e-6); // rigid rotation
+    // eye under water or looking at the sky: unchanged
+    const osg::Matrixd under = lookAt(osg::Vec3d(0, -20, -5), osg::Vec3d(0, 0, -6));
+    EXPECT_EQ(rotatedRefractionView(under, proj, 0.0, eta), under);
+    const osg::Matrixd sky = lookAt(osg::Vec3d(0, -20, 5), osg::Vec3d(0, 0, 30));
+    EXPECT_EQ(rotatedRefractionView(sky, proj, 0.0, eta), sky);
+}
+
+TEST(PassMath, ProjectToTextureCentre)
+{
+    const osg::Matrixd view = lookAt(osg::Vec3d(0, -10, 0), osg::Vec3d(0, 0, 0));
+    const osg::Matrixd proj = osg::Matrixd::perspective(45.0, 1.0, 1.0, 100.0);
+    const osg::Vec3d t = projectToTexture(osg::Vec3d(0, 0, 0), view, proj);
+    EXPECT_NEAR(t.x(), 0.5, 1e-12);
+    EXPECT_NEAR(t.y(), 0.5, 1e-12);
+    EXPECT_GT(t.z(), 0.0);
+    EXPECT_LT(t.z(), 1.0);
+}

@@ -1,0 +1,142 @@
+// A red quad above flat water must appear mirrored in the reflection texture at the pixel the
+// geometry predicts, and in the final image where the eye sees its mirror image.
+#include "GLHarness.h"
+#include <osgWater/WaterNode>
+#include <osgWater/Optics>
+#include <cmath>
+
+using namespace testing_gl;
+using namespace osgWater;
+
+namespace {
+
+osg::ref_ptr<WaterNode> flatWater()
+{
+    osg::ref_ptr<WaterNode> water = new WaterNode;
+    water->getSurface()->setWaves({});
+    water->getSurface()->setSize(400.0f);
+    water->getSettings()->setFovExtension(1.5f, 1.5f, 10.0f);
+    return water;
+}
+
+// texture pixel of a local point seen through `view` with `proj` (independent of the kit's code)
+osg::Vec2d texel(const osg::Vec3d& p, const osg::Matrixd& view, const osg::Matrixd& proj, int size)
+{
+    const osg::Vec4d c = osg::Vec4d(p, 1.0) * view * proj;
+    return osg::Vec2d((c.x() / c.w() * 0.5 + 0.5) * size, (c.y() / c.w() * 0.5 + 0.5) * size);
+}
+
+bool isRed(const float* p) { return p[0] > 0.9f && p[1] < 0.1f && p[2] < 0.1f; }
+
+}
+
+TEST(RenderReflection, RedQuadAppearsMirroredWhereGeometryPredicts)
+{
+    Harness h(320, 240);
+    REQUIRE_GL(h);
+    osg::ref_ptr<WaterNode> water = flatWater();
+    water->getSettings()->setRefractionEnabled(false); // F = 1: the water shows the reflection alone
+    // red quad: x in [-1, 1], z in [1, 3], at y = 12
+    water->addChild(emissiveQuad(osg::Vec3(-1, 12, 1), osg::Vec3(1, 12, 1), osg::Vec3(1, 12, 3), osg::Vec3(-1, 12, 3),
+                                 osg::Vec4(1, 0, 0, 1)));
+    h.setScene(water.get());
+    const osg::Vec3d eye(0, 0, 2);
+    h.lookAt(eye, osg::Vec3d(0, 12, 0));
+    h.frame(0.0);
+
+    ViewPasses* passes = water->getViewPasses(h.camera());
+    ASSERT_TRUE(passes);
+    osg::ref_ptr<osg::Image> refl = h.readTexture(passes->getReflectionCamera()->getColorTexture());
+    ASSERT_TRUE(refl.valid());
+    ASSERT_TRUE(allFinite(refl.get()));
+    const int size = refl->s();
+    EXPECT_EQ(size, 512);
+
+    // expected: mirror (z -> -z) then the main camera with its tangents widened 1.5x
+    const osg::Matrixd view = h.camera()->getViewMatrix();
+    const osg::Matrixd proj = h.camera()->getProjectionMatrix() * osg::Matrixd::scale(1 / 1.5, 1 / 1.5, 1.0);
+    const osg::Matrixd mirrorView = osg::Matrixd::scale(1, 1, -1) * view;
+    double x0 = 1e9, x1 = -1e9, y0 = 1e9, y1 = -1e9;
+    for (const osg::Vec3d& c : { osg::Vec3d(-1, 12, 1), osg::Vec3d(1, 12, 1), osg::Vec3d(1, 12, 3), osg::Vec3d(-1, 12, 3) }) {
+        const osg::Vec2d t = texel(c, mirrorView, proj, size);
+        x0 = std::min(x0, t.x()); x1 = std::max(x1, t.x());
+        y0 = std::min(y0, t.y()); y1 = std::max(y1, t.y());
+    }
+    ASSERT_GT(x1 - x0, 8.0);
+    ASSERT_GT(y1 - y0, 8.0);
+    // inside (1 px in from the predicted edges) red; 2 px outside not red: tolerance 1.5 px
+    const double tol = 1.5;
+    int inside = 0, insideRed = 0, ring = 0, ringRed = 0;
+    for (int y = 0; y < size; ++y)
+        for (int x = 0; x < size; ++x) {
+            const double cx = x + 0.5, cy = y + 0.5;
+            const bool in = cx > x0 + tol && cx < x1 - tol && cy > y0 + tol && cy < y1 - tol;
+            const bool out = cx < x0 - tol || cx > x1 + tol || cy < y0 - tol || cy > y1 + tol;
+            const bool red = isRed(pixel(refl.get(), x, y));
+            if (in) { ++inside; insideRed += red; }
+            if (out) { ++ring; ringRed += red; }
+        }
+    EXPECT_EQ(insideRed, inside) << "predicted rect " << x0 << ".." << x1 << " x " << y0 << ".." << y1;
+    EXPECT_EQ(ringRed, 0);
+
+    // the final image: where the eye sees the mirror image of the quad's centre, the water is red;
+    // beside it, the reflected sky (the clear colour)
+    osg::ref_ptr<osg::Image> img = h.readColor();
+    ASSERT_TRUE(allFinite(img.get()));
+    const osg::Matrixd mainProj = h.camera()->getProjectionMatrix();
+    const osg::Vec2d q = texel(osg::Vec3d(0, 12, -2), view, mainProj, 1);
+    const float* c = pixel(img.get(), int(q.x() * h.width()), int(q.y() * h.height()));
+    EXPECT_NEAR(c[0], 1.0f, 0.02f);
+    EXPECT_NEAR(c[1], 0.0f, 0.02f);
+    const osg::Vec2d s = texel(osg::Vec3d(5, 12, -2), view, mainProj, 1);
+    const float* sky = pixel(img.get(), int(s.x() * h.width()), int(s.y() * h.height()));
+    EXPECT_NEAR(sky[0], 0.2f, 0.02f);
+    EXPECT_NEAR(sky[1], 0.3f, 0.02f);
+    EXPECT_NEAR(sky[2], 0.8f, 0.02f);
+}
+
+TEST(RenderReflection, ShadedColourMatchesTheOpticsMirror)
+{
+    // flat water over a uniform grey bed: every water pixel is eq. 9 of eq. 5 of the bed and the
+    // reflected sky, with Fresnel eq. 7-8 and attenuation eq. 4 along the exact refracted path
+    Harness h(160, 120);
+    REQUIRE_GL(h);
+    osg::ref_ptr<WaterNode> water = flatWater();
+    const float depth = 1.5f;
+    water->addChild(emissiveQuad(osg::Vec3(-100, -100, -depth), osg::Vec3(100, -100, -depth),
+                                 osg::Vec3(100, 100, -depth), osg::Vec3(-100, 100, -depth), osg::Vec4(0.6f, 0.5f, 0.4f, 1)));
+    h.setScene(water.get());
+    const osg::Vec3d eye(0, -3, 2.5);
+    h.lookAt(eye, osg::Vec3d(0, 8, -1.5));
+    h.frame(0.0);
+    osg::ref_ptr<osg::Image> img = h.readColor();
+    ASSERT_TRUE(allFinite(img.get()));
+
+    const WaterSettings* s = water->getSettings();
+    const osg::Matrixd inv = osg::Matrixd::inverse(h.camera()->getViewMatrix() * h.camera()->getProjectionMatrix());
+    const glm::vec3 sky(0.2f, 0.3f, 0.8f), bed(0.6f, 0.5f, 0.4f);
+    const glm::vec3 wc(s->getWaterColor().x(), s->getWaterColor().y(), s->getWaterColor().z());
+    int checked = 0;
+    double worst = 0.0;
+    for (int y = 2; y < h.height(); y += 7)
+        for (int x = 2; x < h.width(); x += 7) {
+            const double nx = (x + 0.5) / h.width() * 2 - 1, ny = (y + 0.5) / h.height() * 2 - 1;
+            osg::Vec3d d = osg::Vec3d(nx, ny, 1) * inv - osg::Vec3d(nx, ny, -1) * inv;
+            d.normalize();
+            if (d.z() > -0.05) continue; // sky, or too grazing for a fair texel comparison
+            const osg::Vec3d U = eye + d * (-eye.z() / d.z());
+            const glm::vec3 I(d.x(), d.y(), d.z()), N(0, 0, 1);
+            const glm::vec3 R = optics::refract(I, N, s->getAirIOR() / s->getWaterIOR());
+            glm::vec3 X;
+            ASSERT_TRUE(optics::intersectPlaneZ(glm::vec3(U.x(), U.y(), U.z()), R, -depth, X));
+            const float dist = glm::length(X - glm::vec3(U.x(), U.y(), U.z()));
+            const glm::vec3 refr = optics::waterTint(bed, wc, optics::attenuation(s->getAttenuation(), dist));
+            const float F = optics::fresnelSchlick(-I.z, s->getNormalReflectance(), s->getFresnelExponent());
+            const glm::vec3 expect = optics::fresnelMix(refr, sky, F);
+            const float* c = pixel(img.get(), x, y);
+            for (int k = 0; k < 3; ++k) worst = std::max(worst, double(std::fabs(c[k] - expect[k])));
+            ++checked;
+        }
+    EXPECT_GT(checked, 100);
+    EXPECT_LT(worst, 0.01) << "8-bit pass textures: tolerance 0.01";
+}

@@ -1,0 +1,145 @@
+// A checkerboard bed under flat water must be seen where Snell's law puts it. The water shader's
+// bottom estimate W (debug output) is compared per pixel with the exact refracted hit; the error is
+// stated in refraction-texture texels, where the colour lookup happens.
+#include "GLHarness.h"
+#include <osgWater/WaterNode>
+#include <osgWater/Optics>
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+using namespace testing_gl;
+using namespace osgWater;
+
+namespace {
+
+const float kDepth = 2.0f, kCell = 0.5f;
+
+struct Pixel { int x, y; osg::Vec3d U, X; };
+
+struct RefractionScene {
+    Harness h{ 200, 150 };
+    osg::ref_ptr<WaterNode> water = new WaterNode;
+    osg::Vec3d eye{ 0, -4, 3 };
+
+    RefractionScene()
+    {
+        if (!h.ok()) return;
+        water->getSurface()->setWaves({});
+        water->getSurface()->setSize(400.0f);
+        WaterSettings* s = water->getSettings();
+        s->setFovExtension(1.5f, 1.5f, 10.0f);
+        s->setReflectionEnabled(false); // F = 0: the water shows the refracted bed alone
+        s->setAttenuation(0.0f);        // a = 1: no water colour mixed in
+        water->addChild(checkerPlane(-kDepth, 120.0f, kCell));
+        h.setScene(water.get());
+        h.lookAt(eye, osg::Vec3d(0, 6, -2));
+    }
+
+    // pixels whose eye ray meets the water, with the exact refracted hit X on the bed
+    std::vector<Pixel> exactHits()
+    {
+        std::vector<Pixel> out;
+        const osg::Matrixd inv = osg::Matrixd::inverse(h.camera()->getViewMatrix() * h.camera()->getProjectionMatrix());
+        for (int y = 0; y < h.height(); ++y)
+            for (int x = 0; x < h.width(); ++x) {
+                const double nx = (x + 0.5) / h.width() * 2 - 1, ny = (y + 0.5) / h.height() * 2 - 1;
+                osg::Vec3d d = osg::Vec3d(nx, ny, 1) * inv - osg::Vec3d(nx, ny, -1) * inv;
+                d.normalize();
+                if (d.z() > -0.1) continue;
+                const osg::Vec3d U = eye + d * (-eye.z() / d.z());
+                if (std::fabs(U.x()) > 40 || std::fabs(U.y()) > 40) continue; // stay well inside the bed
+                // Snell in double precision, independent of the kit
+                const double eta = 1.0 / 1.333, ci = -d.z();
+                const double k = 1.0 - eta * eta * (1.0 - ci * ci);
+                const osg::Vec3d R = d * eta + osg::Vec3d(0, 0, 1) * (eta * ci - std::sqrt(k));
+                const osg::Vec3d X = U + R * ((-kDepth - U.z()) / R.z());
+                out.push_back({ x, y, U, X });
+            }
+        return out;
+    }
+
+    // refraction texture texel (main view, tangents widened 1.5x, 512 texels)
+    osg::Vec2d texel(const osg::Vec3d& p)
+    {
+        const osg::Matrixd proj = h.camera()->getProjectionMatrix() * osg::Matrixd::scale(1 / 1.5, 1 / 1.5, 1.0);
+        const osg::Vec4d c = osg::Vec4d(p, 1.0) * h.camera()->getViewMatrix() * proj;
+        return osg::Vec2d((c.x() / c.w() * 0.5 + 0.5) * 512, (c.y() / c.w() * 0.5 + 0.5) * 512);
+    }
+
+    // size of a refraction texel on the bed at X (the larger of its two axes)
+    double metresPerTexel(const osg::Vec3d& X)
+    {
+        const double dx = (texel(X + osg::Vec3d(0.01, 0, 0)) - texel(X)).length();
+        const double dy = (texel(X + osg::Vec3d(0, 0.01, 0)) - texel(X)).length();
+        return 0.01 / std::max(std::min(dx, dy), 1e-9);
+    }
+
+    // texel errors of the bottom estimate W for one lookup technique
+    std::vector<double> texelErrors(WaterSettings::RefractionLookup lookup, int steps, int* misses)
+    {
+        water->getSettings()->setRefractionLookup(lookup);
+        water->getSettings()->setSearchSteps(steps);
+        water->setDebugOutput(DEBUG_BOTTOM_HIT);
+        h.frame(0.0);
+        osg::ref_ptr<osg::Image> img = h.readColor();
+        EXPECT_TRUE(allFinite(img.get()));
+        std::vector<double> err;
+        *misses = 0;
+        for (const Pixel& p : exactHits()) {
+            const float* w = pixel(img.get(), p.x, p.y);
+            if (w[3] < 0.5f) { ++*misses; continue; }
+            err.push_back((texel(osg::Vec3d(w[0], w[1], w[2])) - texel(p.X)).length());
+        }
+        std::sort(err.begin(), err.end());
+        return err;
+    }
+};
+
+double quantile(const std::vector<double>& v, double q) { return v.empty() ? 1e9 : v[size_t(q * (v.size() - 1))]; }
+
+}
+
+TEST(RenderRefraction, IterativeSearchFindsTheSnellHitAndBeatsOneStep)
+{
+    RefractionScene sc;
+    REQUIRE_GL(sc.h);
+    int missIter = 0, missOne = 0;
+    const std::vector<double> iter = sc.texelErrors(WaterSettings::ITERATIVE, 3, &missIter);
+    const std::vector<double> one = sc.texelErrors(WaterSettings::ONE_STEP, 1, &missOne);
+    ASSERT_GT(iter.size(), 5000u);
+    EXPECT_EQ(missIter, 0);
+    // tolerances, in refraction texels: the iterative search is exact up to depth-buffer
+    // resolution on a planar bed (its lines are coplanar), so half a texel median, 1.5 at p99
+    EXPECT_LT(quantile(iter, 0.5), 0.5);
+    EXPECT_LT(quantile(iter, 0.99), 1.5);
+    // the one-step lookup W = U + dv R overshoots: much larger error
+    EXPECT_GT(quantile(one, 0.5), 4.0 * std::max(quantile(iter, 0.5), 0.25));
+    RecordProperty("iterative_median_texels", std::to_string(quantile(iter, 0.5)));
+    RecordProperty("onestep_median_texels", std::to_string(quantile(one, 0.5)));
+    std::printf("texel error median / p99: iterative %.3f / %.3f, one-step %.3f / %.3f\n", quantile(iter, 0.5),
+                quantile(iter, 0.99), quantile(one, 0.5), quantile(one, 0.99));
+}
+
+TEST(RenderRefraction, CheckerboardColourIsTheOneSnellPredicts)
+{
+    RefractionScene sc;
+    REQUIRE_GL(sc.h);
+    sc.water->getSettings()->setRefractionLookup(WaterSettings::ITERATIVE);
+    sc.h.frame(0.0);
+    osg::ref_ptr<osg::Image> img = sc.h.readColor();
+    ASSERT_TRUE(allFinite(img.get()));
+    int checked = 0, wrong = 0;
+    for (const Pixel& p : sc.exactHits()) {
+        // skip pixels whose exact hit is within 1.5 refraction texels of a cell edge
+        const double m = 1.5 * sc.metresPerTexel(p.X);
+        const float c = checkerAt(p.X.x(), p.X.y(), kCell);
+        if (checkerAt(p.X.x() + m, p.X.y(), kCell) != c || checkerAt(p.X.x() - m, p.X.y(), kCell) != c ||
+            checkerAt(p.X.x(), p.X.y() + m, kCell) != c || checkerAt(p.X.x(), p.X.y() - m, kCell) != c)
+            continue;
+        ++checked;
+        wrong += std::fabs(pixel(img.get(), p.x, p.y)[1] - c) > 0.25f;
+    }
+    ASSERT_GT(checked, 3000);
+    EXPECT_LE(wrong, checked / 200) << wrong << " of " << checked << " pixels show the wrong cell";
+}

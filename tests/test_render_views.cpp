@@ -1,0 +1,151 @@
+// Per-view passes: two views in one CompositeViewer each render their own, correct reflection;
+// passes cull (not just clip) subgraphs wholly on the wrong side of the water plane.
+#include "GLHarness.h"
+#include <osgWater/WaterNode>
+#include <osgViewer/CompositeViewer>
+#include <osgUtil/CullVisitor>
+#include <map>
+
+using namespace testing_gl;
+using namespace osgWater;
+
+namespace {
+
+osg::Vec2i mirrorPixel(osg::Camera* cam, const osg::Vec3d& p, int w, int h)
+{
+    const osg::Vec4d c = osg::Vec4d(p.x(), p.y(), -p.z(), 1.0) * cam->getViewMatrix() * cam->getProjectionMatrix();
+    return osg::Vec2i(int((c.x() / c.w() * 0.5 + 0.5) * w), int((c.y() / c.w() * 0.5 + 0.5) * h));
+}
+
+// counts, per camera name, how often cull reaches a node
+struct CullCounter : public osg::NodeCallback {
+    std::map<std::string, int> visits;
+    void operator()(osg::Node* node, osg::NodeVisitor* nv) override
+    {
+        if (osgUtil::CullVisitor* cv = nv->asCullVisitor()) ++visits[cv->getCurrentCamera()->getName()];
+        traverse(node, nv);
+    }
+};
+
+}
+
+TEST(RenderViews, TwoViewsEachGetTheirOwnReflection)
+{
+    std::string why;
+    osg::ref_ptr<osg::GraphicsContext> gc = createPbuffer(64, 64, why);
+    struct Probe { bool ok() const { return v; } const std::string& why() const { return w; } bool v; std::string w; };
+    Probe probe{ gc.valid(), why };
+    REQUIRE_GL(probe);
+
+    osg::ref_ptr<WaterNode> water = new WaterNode;
+    water->getSurface()->setWaves({});
+    water->getSurface()->setSize(400.0f);
+    water->getSettings()->setRefractionEnabled(false);
+    water->getSettings()->setReflectionTextureSize(256);
+    // red quad north (+y), green quad south (-y)
+    water->addChild(emissiveQuad(osg::Vec3(-2, 12, 1), osg::Vec3(2, 12, 1), osg::Vec3(2, 12, 4), osg::Vec3(-2, 12, 4),
+                                 osg::Vec4(1, 0, 0, 1)));
+    water->addChild(emissiveQuad(osg::Vec3(2, -12, 1), osg::Vec3(-2, -12, 1), osg::Vec3(-2, -12, 4), osg::Vec3(2, -12, 4),
+                                 osg::Vec4(0, 1, 0, 1)));
+
+    const int W = 128, H = 96;
+    osg::ref_ptr<osgViewer::CompositeViewer> viewer = new osgViewer::CompositeViewer;
+    viewer->setThreadingModel(osgViewer::ViewerBase::SingleThreaded);
+    viewer->setReleaseContextAtEndOfFrameHint(false);
+    osg::ref_ptr<osg::Texture2D> targets[2];
+    const osg::Vec3d eyes[2] = { osg::Vec3d(0, 0, 2), osg::Vec3d(0, 0, 2) };
+    const osg::Vec3d centers[2] = { osg::Vec3d(0, 12, 0), osg::Vec3d(0, -12, 0) };
+    for (int i = 0; i < 2; ++i) {
+        osg::ref_ptr<osgViewer::View> view = new osgViewer::View;
+        osg::Camera* cam = view->getCamera();
+        targets[i] = attachFloatTarget(cam, gc.get(), W, H);
+        cam->setClearColor(osg::Vec4(0.2f, 0.3f, 0.8f, 1.0f));
+        cam->setComputeNearFarMode(osg::CullSettings::DO_NOT_COMPUTE_NEAR_FAR);
+        cam->setViewMatrixAsLookAt(eyes[i], centers[i], osg::Vec3d(0, 0, 1));
+        cam->setProjectionMatrixAsPerspective(45.0, double(W) / H, 0.1, 500.0);
+        view->setSceneData(water.get());
+        viewer->addView(view.get());
+    }
+    viewer->frame(0.0);
+    EXPECT_EQ(water->getNumViews(), 2u);
+
+    const osg::Vec4 expected[2] = { osg::Vec4(1, 0, 0, 1), osg::Vec4(0, 1, 0, 1) };
+    const osg::Vec3d quadCentre[2] = { osg::Vec3d(0, 12, 2.5), osg::Vec3d(0, -12, 2.5) };
+    osg::Texture2D* reflTex[2];
+    for (int i = 0; i < 2; ++i) {
+        osg::Camera* cam = viewer->getView(i)->getCamera();
+        ViewPasses* p = water->getViewPasses(cam);
+        ASSERT_TRUE(p);
+        reflTex[i] = p->getReflectionCamera()->getColorTexture();
+        // the final image shows this view's quad mirrored, in its own colour
+        osg::ref_ptr<osg::Image> img = readTexture(gc.get(), targets[i].get());
+        ASSERT_TRUE(allFinite(img.get()));
+        const osg::Vec2i px = mirrorPixel(cam, quadCentre[i], W, H);
+        const float* c = pixel(img.get(), px.x(), px.y());
+        for (int k = 0; k < 3; ++k) EXPECT_NEAR(c[k], expected[i][k], 0.02f) << "view " << i << " channel " << k;
+        // and its reflection texture holds its own quad only
+        osg::ref_ptr<osg::Image> refl = readTexture(gc.get(), reflTex[i]);
+        int red = 0, green = 0;
+        for (int y = 0; y < refl->t(); ++y)
+            for (int x = 0; x < refl->s(); ++x) {
+                const float* q = pixel(refl.get(), x, y);
+                red += q[0] > 0.9f && q[1] < 0.1f;
+                green += q[1] > 0.9f && q[0] < 0.1f;
+            }
+        EXPECT_GT(i == 0 ? red : green, 50) << "view " << i;
+        EXPECT_EQ(i == 0 ? green : red, 0) << "view " << i;
+    }
+    EXPECT_NE(reflTex[0], reflTex[1]);
+}
+
+TEST(RenderViews, PassesCullSubgraphsWhollyOnTheWrongSide)
+{
+    Harness h(64, 64);
+    REQUIRE_GL(h);
+    osg::ref_ptr<WaterNode> water = new WaterNode;
+    osg::ref_ptr<osg::Geode> above = emissiveQuad(osg::Vec3(-1, 8, 2), osg::Vec3(1, 8, 2), osg::Vec3(1, 8, 3),
+                                                  osg::Vec3(-1, 8, 3), osg::Vec4(1, 0, 0, 1));
+    osg::ref_ptr<osg::Geode> below = emissiveQuad(osg::Vec3(-1, 8, -3), osg::Vec3(1, 8, -3), osg::Vec3(1, 8, -2),
+                                                  osg::Vec3(-1, 8, -2), osg::Vec4(0, 1, 0, 1));
+    osg::ref_ptr<osg::Geode> crossing = emissiveQuad(osg::Vec3(-1, 9, -1), osg::Vec3(1, 9, -1), osg::Vec3(1, 9, 1),
+                                                     osg::Vec3(-1, 9, 1), osg::Vec4(0, 0, 1, 1));
+    osg::ref_ptr<CullCounter> ca = new CullCounter, cb = new CullCounter, cc = new CullCounter;
+    above->setCullCallback(ca.get());
+    below->setCullCallback(cb.get());
+    crossing->setCullCallback(cc.get());
+    water->addChild(above.get());
+    water->addChild(below.get());
+    water->addChild(crossing.get());
+    h.camera()->setName("main");
+    h.setScene(water.get());
+    h.lookAt(osg::Vec3d(0, 0, 1.5), osg::Vec3d(0, 8, 0));
+    h.frame(0.0);
+    EXPECT_EQ(ca->visits["main"], 1);
+    EXPECT_EQ(ca->visits["osgWater.ReflectionCamera"], 1);
+    EXPECT_EQ(ca->visits["osgWater.RefractionCamera"], 0);
+    EXPECT_EQ(cb->visits["main"], 1);
+    EXPECT_EQ(cb->visits["osgWater.ReflectionCamera"], 0);
+    EXPECT_EQ(cb->visits["osgWater.RefractionCamera"], 1);
+    EXPECT_EQ(cc->visits["osgWater.ReflectionCamera"], 1); // crossing the plane: drawn and clipped by both
+    EXPECT_EQ(cc->visits["osgWater.RefractionCamera"], 1);
+}
+
+TEST(RenderViews, NoPassesWhenTheWaterIsOutOfView)
+{
+    Harness h(64, 64);
+    REQUIRE_GL(h);
+    osg::ref_ptr<WaterNode> water = new WaterNode;
+    water->getSurface()->setSize(10.0f);
+    osg::ref_ptr<osg::Geode> sky = emissiveQuad(osg::Vec3(-1, 8, 20), osg::Vec3(1, 8, 20), osg::Vec3(1, 8, 22),
+                                                osg::Vec3(-1, 8, 22), osg::Vec4(1, 0, 0, 1));
+    osg::ref_ptr<CullCounter> counter = new CullCounter;
+    sky->setCullCallback(counter.get());
+    water->addChild(sky.get());
+    h.camera()->setName("main");
+    h.setScene(water.get());
+    h.lookAt(osg::Vec3d(0, 0, 21), osg::Vec3d(0, 8, 21), 30.0); // looking at the horizon, water below the view
+    h.frame(0.0);
+    EXPECT_EQ(counter->visits["main"], 1);
+    EXPECT_EQ(counter->visits["osgWater.ReflectionCamera"], 0);
+    EXPECT_EQ(water->getViewPasses(h.camera()), nullptr);
+}

@@ -1,0 +1,105 @@
+// WaterSettings: thesis table 1 defaults, and clamping of absurd input with a warning.
+#include <osgWater/WaterSettings>
+#include <osg/Notify>
+#include <gtest/gtest.h>
+#include <cmath>
+#include <sstream>
+
+using namespace osgWater;
+
+namespace {
+// Captures OSG_WARN output so tests can check that clamping says so.
+struct WarnCapture : public osg::NotifyHandler {
+    std::ostringstream text;
+    void notify(osg::NotifySeverity, const char* message) override { text << message; }
+};
+struct ScopedWarnCapture {
+    osg::ref_ptr<WarnCapture> capture = new WarnCapture;
+    osg::ref_ptr<osg::NotifyHandler> previous = osg::getNotifyHandler();
+    ScopedWarnCapture() { osg::setNotifyHandler(capture.get()); }
+    ~ScopedWarnCapture() { osg::setNotifyHandler(previous.get()); }
+    std::string str() const { return capture->text.str(); }
+};
+}
+
+TEST(Settings, DefaultsAreThesisTable1)
+{
+    osg::ref_ptr<WaterSettings> s = new WaterSettings;
+    EXPECT_FLOAT_EQ(s->getReflectionScale(), 1.0f);   // c
+    EXPECT_FLOAT_EQ(s->getAttenuation(), 0.5f);       // k
+    EXPECT_EQ(s->getWaterColor(), osg::Vec3(0.0f, 0.2f, 0.1f));
+    EXPECT_FLOAT_EQ(s->getFresnelExponent(), 5.0f);   // q
+    EXPECT_FLOAT_EQ(s->getFovExtensionNear(), 1.5f);  // FOV_ext
+    EXPECT_EQ(s->getReflectionTextureSize(), 512);
+    EXPECT_EQ(s->getRefractionTextureSize(), 512);
+    EXPECT_EQ(s->getSearchSteps(), 3);
+    EXPECT_EQ(s->getRefractionLookup(), WaterSettings::ITERATIVE);
+    EXPECT_NEAR(s->getAirIOR() / s->getWaterIOR(), 0.75f, 1e-3f); // the shader's 0.75
+}
+
+TEST(Settings, FovExtensionFallsWithEyeHeight)
+{
+    osg::ref_ptr<WaterSettings> s = new WaterSettings;
+    EXPECT_NEAR(s->fovExtensionAt(0.0), 1.5f, 1e-6f);   // thesis: ~50% near the surface
+    EXPECT_NEAR(s->fovExtensionAt(1e6), 1.2f, 1e-6f);   // ~20% far away
+    EXPECT_NEAR(s->fovExtensionAt(-3.0), s->fovExtensionAt(3.0), 1e-7f);
+    EXPECT_GT(s->fovExtensionAt(2.0), s->fovExtensionAt(20.0));
+    EXPECT_TRUE(std::isfinite(s->fovExtensionAt(NAN)));
+}
+
+TEST(Settings, AbsurdValuesAreClampedWithAWarning)
+{
+    osg::ref_ptr<WaterSettings> s = new WaterSettings;
+    {
+        ScopedWarnCapture w;
+        s->setReflectionTextureSize(-5);
+        EXPECT_NE(w.str().find("reflectionTextureSize"), std::string::npos);
+    }
+    EXPECT_EQ(s->getReflectionTextureSize(), 16);
+    {
+        ScopedWarnCapture w;
+        s->setRefractionTextureSize(1000000000);
+        EXPECT_NE(w.str().find("clamped"), std::string::npos);
+    }
+    EXPECT_EQ(s->getRefractionTextureSize(), 4096);
+    {
+        ScopedWarnCapture w;
+        s->setWaterColor(osg::Vec3(NAN, 2.0f, -1.0f));
+        EXPECT_NE(w.str().find("NaN"), std::string::npos);
+    }
+    EXPECT_EQ(s->getWaterColor(), osg::Vec3(0.0f, 1.0f, 0.0f));
+    s->setSearchSteps(0);
+    EXPECT_EQ(s->getSearchSteps(), 1);
+    s->setSearchSteps(99);
+    EXPECT_EQ(s->getSearchSteps(), 8);
+    s->setAttenuation(NAN);
+    EXPECT_FLOAT_EQ(s->getAttenuation(), 0.5f);
+    s->setAttenuation(INFINITY);
+    EXPECT_FLOAT_EQ(s->getAttenuation(), 100.0f);
+    s->setWaterIOR(0.1f);
+    EXPECT_FLOAT_EQ(s->getWaterIOR(), 1.0f);
+    s->setFovExtension(NAN, 0.5f, -1.0f);
+    EXPECT_FLOAT_EQ(s->getFovExtensionNear(), 1.5f);
+    EXPECT_FLOAT_EQ(s->getFovExtensionFar(), 1.0f);
+    EXPECT_GT(s->getFovExtensionFalloff(), 0.0f);
+    s->setSunDirection(osg::Vec3(0.0f, 0.0f, 0.0f));
+    EXPECT_NEAR(s->getSunDirection().length(), 1.0f, 1e-6f);
+}
+
+TEST(Settings, SettersBumpTheRevision)
+{
+    osg::ref_ptr<WaterSettings> s = new WaterSettings;
+    const unsigned int r0 = s->getRevision();
+    s->setFresnelModel(WaterSettings::FRESNEL_EXACT);
+    EXPECT_GT(s->getRevision(), r0);
+    const unsigned int r1 = s->getRevision();
+    s->setSearchSteps(5);
+    EXPECT_GT(s->getRevision(), r1);
+}
+
+TEST(Settings, NormalReflectanceIsEquation8)
+{
+    osg::ref_ptr<WaterSettings> s = new WaterSettings;
+    const float r = (1.0f - 0.75f) / (1.0f + 0.75f);
+    EXPECT_NEAR(s->getNormalReflectance(), r * r, 1e-4f);
+}

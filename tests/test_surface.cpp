@@ -1,0 +1,101 @@
+// WaterSurface: the thesis's grid, analytic normals, amplitude, huge times.
+#include <osgWater/WaterSurface>
+#include <gtest/gtest.h>
+#include <cmath>
+
+using namespace osgWater;
+
+TEST(Surface, DefaultGridIsTheThesisMesh)
+{
+    osg::ref_ptr<WaterSurface> s = new WaterSurface;
+    ASSERT_EQ(s->getNumDrawables(), 1u);
+    osg::Geometry* g = s->getDrawable(0)->asGeometry();
+    ASSERT_TRUE(g);
+    EXPECT_EQ(g->getVertexArray()->getNumElements(), 2401u);                 // 49 x 49
+    EXPECT_EQ(g->getPrimitiveSet(0)->getNumIndices() / 3, 4608u);            // 2 x 48 x 48
+    EXPECT_TRUE(s->usesGrid());
+}
+
+TEST(Surface, MaxAmplitudeBoundsTheHeight)
+{
+    osg::ref_ptr<WaterSurface> s = new WaterSurface;
+    s->setLevel(2.0);
+    const float a = s->getMaxAmplitude();
+    EXPECT_NEAR(a, 0.075f, 1e-6f);
+    double hmax = 0.0;
+    for (double x = -20.0; x < 20.0; x += 0.37)
+        for (double y = -20.0; y < 20.0; y += 0.41) hmax = std::max(hmax, std::fabs(s->height(x, y, 3.7) - 2.0));
+    EXPECT_LE(hmax, a + 1e-9);
+    EXPECT_GT(hmax, 0.5 * a);
+    // the drawable's bound includes the crests and troughs the vertex shader makes
+    const osg::BoundingBox& bb = s->getDrawable(0)->getBoundingBox();
+    EXPECT_LE(bb.zMin(), 2.0f - a + 1e-5f);
+    EXPECT_GE(bb.zMax(), 2.0f + a - 1e-5f);
+}
+
+TEST(Surface, NormalsAreTheAnalyticGradient)
+{
+    osg::ref_ptr<WaterSurface> s = new WaterSurface;
+    const double h = 1e-5, t = 12.25;
+    for (double x = -3.0; x < 3.0; x += 1.1)
+        for (double y = -2.0; y < 2.0; y += 0.9) {
+            const double hx = (s->height(x + h, y, t) - s->height(x - h, y, t)) / (2 * h);
+            const double hy = (s->height(x, y + h, t) - s->height(x, y - h, t)) / (2 * h);
+            osg::Vec3d fd(-hx, -hy, 1.0);
+            fd.normalize();
+            const osg::Vec3d n = s->normal(x, y, t);
+            EXPECT_NEAR((n - fd).length(), 0.0, 1e-6);
+        }
+}
+
+TEST(Surface, HugeTimesStayFiniteAndPeriodic)
+{
+    osg::ref_ptr<WaterSurface> s = new WaterSurface;
+    for (double t : { 0.0, 1e6, 1e9, 1e12, 1e300 }) {
+        for (unsigned int i = 0; i < s->getWaves().size(); ++i) {
+            const float p = s->wrappedPhase(i, t);
+            EXPECT_GE(p, 0.0f);
+            EXPECT_LT(p, 6.2832f);
+        }
+        EXPECT_TRUE(std::isfinite(s->height(1.0, 2.0, t)));
+    }
+    EXPECT_TRUE(std::isfinite(s->height(1.0, 2.0, NAN)));
+    EXPECT_TRUE(std::isfinite(s->height(1.0, 2.0, INFINITY)));
+}
+
+TEST(Surface, UserMeshReplacesTheGrid)
+{
+    osg::ref_ptr<WaterSurface> s = new WaterSurface;
+    osg::ref_ptr<osg::Geometry> g = new osg::Geometry;
+    osg::ref_ptr<osg::Vec3Array> v = new osg::Vec3Array;
+    v->push_back(osg::Vec3(0, 0, 0.0f));
+    v->push_back(osg::Vec3(1, 0, 0.2f));
+    v->push_back(osg::Vec3(0, 1, -0.1f));
+    g->setVertexArray(v.get());
+    g->addPrimitiveSet(new osg::DrawArrays(GL_TRIANGLES, 0, 3));
+    s->setMesh(g.get());
+    EXPECT_FALSE(s->usesGrid());
+    EXPECT_EQ(s->getDrawable(0), g.get());
+    EXPECT_NEAR(s->getMaxAmplitude(), 0.2f, 1e-6f);
+    s->setMesh(nullptr);
+    EXPECT_TRUE(s->usesGrid());
+}
+
+TEST(Surface, BadParametersAreClamped)
+{
+    osg::ref_ptr<WaterSurface> s = new WaterSurface;
+    s->setResolution(0);
+    EXPECT_EQ(s->getResolution(), 2u);
+    s->setSize(NAN);
+    EXPECT_GT(s->getSize(), 0.0f);
+    std::vector<Wave> w(12);
+    w[0].wavelength = NAN;
+    w[1].amplitude = -1.0f;
+    w[2].direction.set(0.0f, 0.0f);
+    s->setWaves(w);
+    EXPECT_EQ(s->getWaves().size(), WaterSurface::MAX_WAVES);
+    EXPECT_GT(s->getWaves()[0].wavelength, 0.0f);
+    EXPECT_EQ(s->getWaves()[1].amplitude, 0.0f);
+    EXPECT_NEAR(s->getWaves()[2].direction.length(), 1.0f, 1e-6f);
+    EXPECT_TRUE(std::isfinite(s->height(0.5, 0.5, 1.0)));
+}
