@@ -122,13 +122,16 @@ BottomHit iterativeSearch(const glm::vec3& U, const glm::vec3& R, int steps, con
     steps = std::min(std::max(steps, 1), 8);
     glm::vec3 Aprev;
     if (!bottomAlongRay(U, lookup, Aprev)) return best;
-    glm::vec3 W = U + glm::length(Aprev - U) * R; // W_1: the one-step guess
+    // fallback: the bottom straight behind U (no refraction offset) beats no bottom at all
+    best.valid = true;
+    best.W = best.A = Aprev;
     best.error = INFINITY;
+    glm::vec3 W = U + glm::length(Aprev - U) * R; // W_1: the one-step guess
     for (int i = 1; i <= steps; ++i) {
         glm::vec3 A;
-        if (!bottomAlongRay(W, lookup, A)) break; // sky beyond W: keep the best so far
+        if (!bottomAlongRay(W, lookup, A)) { W = 0.5f * (U + W); continue; } // sky: back towards U
         const float e = glm::length(A - W);
-        if (e < best.error) { best.valid = true; best.W = W; best.A = A; best.error = e; }
+        if (e < best.error) { best.W = W; best.A = A; best.error = e; }
         if (i == steps) break;
         // W_{i+1}: where p crosses the segment A_i A_{i+1} (eq. 3) ...
         glm::vec3 Wn;
@@ -144,7 +147,7 @@ BottomHit iterativeSearch(const glm::vec3& U, const glm::vec3& R, int steps, con
         Aprev = A;
         W = Wn;
     }
-    if (!best.valid) best.error = 0.0f;
+    if (std::isinf(best.error)) best.error = 0.0f;
     return best;
 }
 

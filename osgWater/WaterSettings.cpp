@@ -55,7 +55,7 @@ WaterSettings::WaterSettings()
       _fovExtNear(1.5f), _fovExtFar(1.2f), _fovExtFalloff(10.0f),
       _clipOffset(0.05f),
       _reflectionTextureSize(512), _refractionTextureSize(512),
-      _refractionCameraRotation(false), _reflectionEnabled(true), _refractionEnabled(true),
+      _refractionCameraRotation(true), _reflectionEnabled(true), _refractionEnabled(true),
       _sunDirection(osg::Vec3(0.3f, 0.4f, 0.866f)), _sunColor(1.0f, 1.0f, 0.9f), _ambientColor(0.35f, 0.38f, 0.45f),
       _revision(0)
 {

@@ -100,18 +100,22 @@ owBottomHit owOneStepSearch(vec3 U, vec3 R, float scale, float maxDv)
 }
 
 // Thesis §7.1: candidates W_1..W_steps, keep the one with the smallest |A - W|.
+// A candidate whose camera ray sees sky (it went under a clipped shore, or off the texture) is
+// no bottom: the next candidate is half way back towards U. If no candidate sees a bottom, A_1
+// (the bottom straight behind U, no refraction offset) is the answer: better than none.
 owBottomHit owIterativeSearch(vec3 U, vec3 R, int steps)
 {
-    owBottomHit best = owBottomHit(false, U, U, 1e30);
+    owBottomHit best = owBottomHit(false, U, U, 0.0);
     vec3 Aprev;
-    if (!owBottomAlongRay(U, Aprev)) { best.error = 0.0; return best; }
+    if (!owBottomAlongRay(U, Aprev)) return best;
+    best = owBottomHit(true, Aprev, Aprev, 1e30);
     vec3 W = U + length(Aprev - U) * R;
     for (int i = 1; i <= 8; ++i) {
         if (i > steps) break;
         vec3 A;
-        if (!owBottomAlongRay(W, A)) break;
+        if (!owBottomAlongRay(W, A)) { W = 0.5 * (U + W); continue; }
         float e = length(A - W);
-        if (e < best.error) { best.valid = true; best.W = W; best.A = A; best.error = e; }
+        if (e < best.error) { best.W = W; best.A = A; best.error = e; }
         if (i == steps) break;
         vec3 Wn;
         vec3 Q = A - Aprev;
@@ -124,6 +128,6 @@ owBottomHit owIterativeSearch(vec3 U, vec3 R, int steps)
         Aprev = A;
         W = Wn;
     }
-    if (!best.valid) best.error = 0.0;
+    if (best.error > 1e29) best.error = 0.0;
     return best;
 }

@@ -195,3 +195,26 @@ TEST(Optics, OneStepClampsAndScalesDepth)
     const BottomHit half = oneStepSearch(U, R, 0.25f, 20.0f, deep);
     EXPECT_NEAR(glm::length(half.W - U), 12.5f, 1e-4f);
 }
+
+TEST(Optics, CandidatesThatSeeSkyStepBackTowardsU)
+{
+    // a bed at Z = -10 that only exists for |x| < 1 (beyond it: a hole, as under a clipped shore)
+    DepthLookup holey = [](const glm::vec3& P) {
+        const glm::vec3 onBed = P * (-10.0f / P.z);
+        return std::fabs(onBed.x) < 1.0f ? DepthSample{ true, -10.0f } : DepthSample{ false, 0.0f };
+    };
+    const glm::vec3 U(0.0f, 0.0f, -5.0f);
+    const glm::vec3 R = glm::normalize(glm::vec3(0.6f, 0.0f, -0.8f)); // exact hit at x = 3.75: in the hole
+    const BottomHit h = iterativeSearch(U, R, 4, holey);
+    ASSERT_TRUE(h.valid);
+    EXPECT_LT(std::fabs(h.A.x), 1.0f);        // a real bottom point
+    EXPECT_NEAR(h.A.z, -10.0f, 1e-4f);
+    // nothing but sky beyond U's own texel: the answer is A_1, straight behind U
+    DepthLookup pinhole = [](const glm::vec3& P) {
+        return std::fabs(P.x / P.z) < 1e-4f ? DepthSample{ true, -10.0f } : DepthSample{ false, 0.0f };
+    };
+    const BottomHit f = iterativeSearch(U, R, 3, pinhole);
+    ASSERT_TRUE(f.valid);
+    EXPECT_NEAR(f.W.x, 0.0f, 1e-5f);
+    EXPECT_NEAR(f.W.z, -10.0f, 1e-4f);
+}
