@@ -1,0 +1,23 @@
+#!/usr/bin/env bash
+# Installs what osgWater needs on Debian 12 (bookworm), from Debian's own packages.
+set -euo pipefail
+PACKAGES=(
+  cmake g++ make pkg-config
+  libopenscenegraph-dev openscenegraph   # OSG 3.6.5: library, osgDB plugins (obj, png), osgviewer
+  libglm-dev                             # CPU mirror of the shader maths
+  libgtest-dev                           # tests
+  xvfb xauth libgl1-mesa-dri             # headless rendering: Xvfb + Mesa llvmpipe
+)
+missing=()
+for p in "${PACKAGES[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "install-deps: all packages present"
+  exit 0
+fi
+SUDO=""
+if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
+echo "install-deps: installing ${missing[*]}"
+$SUDO apt-get update -qq
+DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"

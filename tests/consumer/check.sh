@@ -1,0 +1,9 @@
+#!/usr/bin/env bash
+# Installs the build into a private prefix and builds + runs a consumer with find_package(osgWater).
+set -euo pipefail
+bin="$1"; src="$2"
+rm -rf "$bin/_install" "$bin/_consumer"
+cmake --install "$bin" --prefix "$bin/_install" > /dev/null
+cmake -S "$src" -B "$bin/_consumer" -DCMAKE_PREFIX_PATH="$bin/_install" > /dev/null
+cmake --build "$bin/_consumer" > /dev/null
+LD_LIBRARY_PATH="$bin/_install/lib:$bin/_install/lib/x86_64-linux-gnu:${LD_LIBRARY_PATH:-}" "$bin/_consumer/consumer"
