@@ -66,7 +66,6 @@ int main(int argc, char** argv)
     osg::ref_ptr<osg::Image> image;
     if (headless) {
         viewer.getCamera()->setViewMatrixAsLookAt(eye, center, osg::Vec3d(0, 0, 1));
-        viewer.realize();
         // alternate blocks of water / plain frames so drifts in machine load hit both alike
         const int blocks = 5, perBlock = std::max(frames / blocks, 1);
         double t = 0.0;
