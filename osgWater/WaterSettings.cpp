@@ -56,10 +56,16 @@ WaterSettings::WaterSettings()
       _clipOffset(0.05f),
       _reflectionTextureSize(512), _refractionTextureSize(512),
       _refractionCameraRotation(true), _reflectionEnabled(true), _refractionEnabled(true),
-      _sunDirection(osg::Vec3(0.3f, 0.4f, 0.866f)), _sunColor(1.0f, 1.0f, 0.9f), _ambientColor(0.35f, 0.38f, 0.45f),
+      _sunDirection(defaultSunDirection()), _sunColor(1.0f, 1.0f, 0.9f), _ambientColor(0.35f, 0.38f, 0.45f),
       _revision(0)
 {
-    _sunDirection.normalize();
+}
+
+osg::Vec3 WaterSettings::defaultSunDirection()
+{
+    osg::Vec3 d(0.3f, 0.4f, 0.866f);
+    d.normalize();
+    return d;
 }
 
 WaterSettings::WaterSettings(const WaterSettings& o, const osg::CopyOp& copyop)
@@ -97,18 +103,21 @@ void WaterSettings::setAmbientColor(const osg::Vec3& c) { _ambientColor = clampC
 
 void WaterSettings::setFovExtension(float nearExt, float farExt, float falloffHeight)
 {
-    _fovExtNear = clampOr("fovExtensionNear", nearExt, 1.0f, 4.0f, 1.5f);
-    _fovExtFar = clampOr("fovExtensionFar", farExt, 1.0f, 4.0f, 1.2f);
-    _fovExtFalloff = clampOr("fovExtensionFalloff", falloffHeight, 0.01f, 1.0e5f, 10.0f);
-    touch();
+    setFovExtensionNear(nearExt);
+    setFovExtensionFar(farExt);
+    setFovExtensionFalloff(falloffHeight);
 }
+
+void WaterSettings::setFovExtensionNear(float v) { _fovExtNear = clampOr("fovExtensionNear", v, 1.0f, 4.0f, 1.5f); touch(); }
+void WaterSettings::setFovExtensionFar(float v) { _fovExtFar = clampOr("fovExtensionFar", v, 1.0f, 4.0f, 1.2f); touch(); }
+void WaterSettings::setFovExtensionFalloff(float v) { _fovExtFalloff = clampOr("fovExtensionFalloff", v, 0.01f, 1.0e5f, 10.0f); touch(); }
 
 void WaterSettings::setSunDirection(const osg::Vec3& d)
 {
     osg::Vec3 n = d;
     if (!n.valid() || n.length2() < 1e-12f) {
         OSG_WARN << "osgWater::WaterSettings: sunDirection " << d << " is not a direction, using default" << std::endl;
-        n = osg::Vec3(0.3f, 0.4f, 0.866f);
+        n = defaultSunDirection();
     }
     n.normalize();
     _sunDirection = n;
