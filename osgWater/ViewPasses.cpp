@@ -9,6 +9,8 @@ ViewPasses::ViewPasses(osg::Group* scene, osg::StateSet* sceneState, int reflect
 {
     _reflection = new ReflectionCamera(scene, sceneState, reflectionSize);
     _refraction = new RefractionCamera(scene, sceneState, refractionSize);
+    _reflectionTimer = new GpuTimer;
+    _refractionTimer = new GpuTimer;
     _stateSet = new osg::StateSet;
     _stateSet->setDataVariance(osg::Object::DYNAMIC);
     _stateSet->setTextureAttribute(1, _reflection->getColorTexture());
@@ -26,6 +28,19 @@ ViewPasses::ViewPasses(osg::Group* scene, osg::StateSet* sceneState, int reflect
 bool ViewPasses::matchesSizes(int reflectionSize, int refractionSize) const
 {
     return _reflection->getTextureSize() == reflectionSize && _refraction->getTextureSize() == refractionSize;
+}
+
+void ViewPasses::setTimingEnabled(bool on)
+{
+    if (on == _timing) return;
+    _timing = on;
+    if (on) {
+        _reflectionTimer->attach(_reflection.get());
+        _refractionTimer->attach(_refraction.get());
+    } else {
+        _reflectionTimer->detach(_reflection.get());
+        _refractionTimer->detach(_refraction.get());
+    }
 }
 
 void ViewPasses::update(const PassContext& ctx, bool reflection, bool refraction)

@@ -121,6 +121,7 @@ void WaterNode::cull(osgUtil::CullVisitor& cv)
     ctx.fovExtension = s.fovExtensionAt(eyeHeight);
     ctx.clearColor = camera->getClearColor();
     ctx.settings = &s;
+    passes->setTimingEnabled(_passTiming);
     passes->update(ctx, wantReflection, wantRefraction);
 
     // 4. the passes (pre-render stages of this view)

@@ -1,0 +1,77 @@
+#include "Hud.h"
+#include <osgText/Text>
+#include <osg/Geode>
+#include <osg/Timer>
+#include <cstdio>
+#include <sstream>
+
+using osgWater::WaterSettings;
+
+std::string describeSettings(const WaterSettings& s)
+{
+    std::ostringstream o;
+    o << "refraction " << (!s.getRefractionEnabled() ? "off" : s.getRefractionLookup() == WaterSettings::ONE_STEP ? "one-step"
+                                                                 : "iterative/" + std::to_string(s.getSearchSteps()))
+      << (s.getRefractionCameraRotation() ? " rotated" : "") << ", reflection " << (s.getReflectionEnabled() ? "on" : "off")
+      << ", fresnel " << (s.getFresnelModel() == WaterSettings::FRESNEL_EXACT ? "exact" : s.getFresnelModel() == WaterSettings::FRESNEL_POWER ? "power" : "schlick")
+      << ", k " << s.getAttenuation() << ", tex " << s.getReflectionTextureSize();
+    return o.str();
+}
+
+namespace {
+
+class HudUpdate : public osg::NodeCallback
+{
+public:
+    HudUpdate(osgText::Text* text, osgWater::WaterNode* water, osg::Camera* camera)
+        : _text(text), _water(water), _camera(camera) {}
+
+    void operator()(osg::Node* node, osg::NodeVisitor* nv) override
+    {
+        // frame rate from the viewer's reference (wall-clock) time of successive frames
+        const double now = nv->getFrameStamp() ? nv->getFrameStamp()->getReferenceTime() : 0.0;
+        const double dt = now - _last;
+        _last = now;
+        if (dt > 0 && dt < 10.0) _fps = _fps <= 0 ? 1.0 / dt : 0.9 * _fps + 0.1 / dt;
+        osgWater::ViewPasses* p = _water->getViewPasses(_camera.get());
+        char line[256];
+        std::snprintf(line, sizeof(line), "%.1f fps   reflection %.2f ms   refraction %.2f ms (GPU)\n", _fps,
+                      p ? p->getReflectionMilliseconds() : -1.0, p ? p->getRefractionMilliseconds() : -1.0);
+        _text->setText(std::string(line) + describeSettings(*_water->getSettings()) +
+                       "\nkeys: r reflection  f refraction  t technique  +/- steps  m fresnel  o rotation  s stats  arrows move");
+        traverse(node, nv);
+    }
+
+private:
+    osg::ref_ptr<osgText::Text> _text;
+    osg::ref_ptr<osgWater::WaterNode> _water;
+    osg::observer_ptr<osg::Camera> _camera;
+    double _last = 0.0;
+    double _fps = 0.0;
+};
+
+}
+
+osg::ref_ptr<osg::Camera> createHud(osgWater::WaterNode* water, osg::Camera* mainCamera, int width, int height)
+{
+    osg::ref_ptr<osg::Camera> hud = new osg::Camera;
+    hud->setReferenceFrame(osg::Camera::ABSOLUTE_RF);
+    hud->setProjectionMatrixAsOrtho2D(0, width, 0, height);
+    hud->setViewMatrix(osg::Matrix::identity());
+    hud->setClearMask(GL_DEPTH_BUFFER_BIT);
+    hud->setRenderOrder(osg::Camera::NESTED_RENDER); // inline in the main camera: its FBO when headless
+    hud->setAllowEventFocus(false);
+    osg::ref_ptr<osgText::Text> text = new osgText::Text;
+    text->setCharacterSize(14.0f);
+    text->setPosition(osg::Vec3(10.0f, height - 22.0f, 0.0f));
+    text->setColor(osg::Vec4(1.0f, 1.0f, 1.0f, 1.0f));
+    text->setBackdropType(osgText::Text::DROP_SHADOW_BOTTOM_RIGHT);
+    text->setDataVariance(osg::Object::DYNAMIC);
+    osg::ref_ptr<osg::Geode> geode = new osg::Geode;
+    geode->addDrawable(text.get());
+    // the text has its own shaders; keep the kit's scene program out of it
+    geode->getOrCreateStateSet()->setMode(GL_LIGHTING, osg::StateAttribute::OFF);
+    hud->addChild(geode.get());
+    hud->setUpdateCallback(new HudUpdate(text.get(), water, mainCamera));
+    return hud;
+}

@@ -1,0 +1,9 @@
+// A small on-screen text: frame rate, the passes' GPU times and the current water settings.
+#pragma once
+#include <osgWater/WaterNode>
+#include <osg/Camera>
+
+//! An orthographic nested camera holding the text; it refreshes itself every frame.
+osg::ref_ptr<osg::Camera> createHud(osgWater::WaterNode* water, osg::Camera* mainCamera, int width, int height);
+//! One line describing the settings (also printed by the headless run).
+std::string describeSettings(const osgWater::WaterSettings& s);

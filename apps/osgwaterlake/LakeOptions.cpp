@@ -1,0 +1,97 @@
+#include "LakeOptions.h"
+#include <osgDB/FileUtils>
+#include <osgDB/FileNameUtils>
+#include <iostream>
+
+using osgWater::WaterSettings;
+
+void LakeOptions::describe(osg::ApplicationUsage& u)
+{
+    u.setDescription("osgWater lake demo: the thesis's lake with reflection, refraction, Fresnel and depth colour");
+    u.setCommandLineUsage("osgwaterlake [options] [scene.osgt]");
+    u.addCommandLineOption("--headless", "Render off-screen (pbuffer), write a screenshot, print frame times, exit");
+    u.addCommandLineOption("--frames <n>", "Headless: frames per measured scene (default 60)");
+    u.addCommandLineOption("--no-compare", "Headless: do not also time the scene without water");
+    u.addCommandLineOption("--screenshot <file>", "Screenshot file (default osgwaterlake.png)");
+    u.addCommandLineOption("--size <w> <h>", "Window or image size (default 1024 768)");
+    u.addCommandLineOption("--eye <x> <y> <z>", "Eye position (water plane z = 0)");
+    u.addCommandLineOption("--center <x> <y> <z>", "Point looked at");
+    u.addCommandLineOption("--up <x> <y> <z>", "Up direction");
+    u.addCommandLineOption("--time <t>", "Simulation time of the first frame, seconds (default 10)");
+    u.addCommandLineOption("--no-hud", "Hide the on-screen text");
+    u.addCommandLineOption("--lookup <one-step|iterative>", "Refraction lookup technique");
+    u.addCommandLineOption("--steps <n>", "Candidates of the iterative search (1-8)");
+    u.addCommandLineOption("--fresnel <schlick|power|exact>", "Fresnel model");
+    u.addCommandLineOption("--q <q>", "Fresnel exponent");
+    u.addCommandLineOption("--k <k>", "Attenuation per metre");
+    u.addCommandLineOption("--c <c>", "Reflection lookup scale");
+    u.addCommandLineOption("--water-color <r> <g> <b>", "Water colour");
+    u.addCommandLineOption("--fov-ext <near> <far> <falloff>", "Pass FOV extension near/far the water, e-folding height");
+    u.addCommandLineOption("--texture-size <n>", "Reflection and refraction texture size");
+    u.addCommandLineOption("--no-reflection", "Switch reflection off");
+    u.addCommandLineOption("--no-refraction", "Switch refraction off");
+    u.addCommandLineOption("--no-rotation", "Do not rotate the refraction camera (thesis 5.1)");
+}
+
+bool LakeOptions::read(osg::ArgumentParser& args)
+{
+    headless = args.read("--headless");
+    args.read("--frames", frames);
+    frames = std::max(frames, 2);
+    if (args.read("--no-compare")) compare = false;
+    if (args.read("--no-hud")) hud = false;
+    args.read("--screenshot", screenshot);
+    args.read("--size", width, height);
+    args.read("--eye", eye.x(), eye.y(), eye.z());
+    args.read("--center", center.x(), center.y(), center.z());
+    args.read("--up", up.x(), up.y(), up.z());
+    args.read("--time", time);
+
+    std::string s;
+    float f, g, h;
+    int n;
+    if (args.read("--lookup", s)) {
+        if (s != "one-step" && s != "iterative") { std::cerr << "error: --lookup one-step|iterative" << std::endl; return false; }
+        _setters.push_back([s](WaterSettings& w) { w.setRefractionLookup(s == "one-step" ? WaterSettings::ONE_STEP : WaterSettings::ITERATIVE); });
+    }
+    if (args.read("--steps", n)) _setters.push_back([n](WaterSettings& w) { w.setSearchSteps(n); });
+    if (args.read("--fresnel", s)) {
+        if (s != "schlick" && s != "power" && s != "exact") { std::cerr << "error: --fresnel schlick|power|exact" << std::endl; return false; }
+        _setters.push_back([s](WaterSettings& w) {
+            w.setFresnelModel(s == "exact" ? WaterSettings::FRESNEL_EXACT : s == "power" ? WaterSettings::FRESNEL_POWER : WaterSettings::FRESNEL_SCHLICK);
+        });
+    }
+    if (args.read("--q", f)) _setters.push_back([f](WaterSettings& w) { w.setFresnelExponent(f); });
+    if (args.read("--k", f)) _setters.push_back([f](WaterSettings& w) { w.setAttenuation(f); });
+    if (args.read("--c", f)) _setters.push_back([f](WaterSettings& w) { w.setReflectionScale(f); });
+    if (args.read("--water-color", f, g, h)) _setters.push_back([f, g, h](WaterSettings& w) { w.setWaterColor(osg::Vec3(f, g, h)); });
+    if (args.read("--fov-ext", f, g, h)) _setters.push_back([f, g, h](WaterSettings& w) { w.setFovExtension(f, g, h); });
+    if (args.read("--texture-size", n)) _setters.push_back([n](WaterSettings& w) { w.setReflectionTextureSize(n); w.setRefractionTextureSize(n); });
+    if (args.read("--no-reflection")) _setters.push_back([](WaterSettings& w) { w.setReflectionEnabled(false); });
+    if (args.read("--no-refraction")) _setters.push_back([](WaterSettings& w) { w.setRefractionEnabled(false); });
+    if (args.read("--no-rotation")) _setters.push_back([](WaterSettings& w) { w.setRefractionCameraRotation(false); });
+
+    for (int pos = 1; pos < args.argc(); ++pos)
+        if (!args.isOption(pos)) { scene = args[pos]; args.remove(pos); break; }
+    args.reportRemainingOptionsAsUnrecognized();
+    if (args.errors()) {
+        args.writeErrorMessages(std::cerr);
+        return false;
+    }
+    return true;
+}
+
+void LakeOptions::apply(osgWater::WaterNode& water) const
+{
+    for (const auto& set : _setters) set(*water.getSettings());
+}
+
+std::string findSceneFile(const std::string& name)
+{
+    if (osgDB::fileExists(name)) return name;
+    for (const std::string dir : { std::string(OSGWATER_SOURCE_DATA_DIR), std::string(OSGWATER_INSTALL_DATA_DIR) }) {
+        const std::string base = osgDB::getSimpleFileName(name);
+        if (osgDB::fileExists(dir + "/" + base)) return dir + "/" + base;
+    }
+    return std::string();
+}

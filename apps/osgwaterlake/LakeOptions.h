@@ -1,0 +1,31 @@
+// Command-line options of osgwaterlake: the scene, the view, and every water setting worth trying.
+#pragma once
+#include <osgWater/WaterNode>
+#include <osg/ArgumentParser>
+#include <functional>
+#include <string>
+#include <vector>
+
+struct LakeOptions {
+    std::string scene = "data/lake.osgt";
+    int width = 1024, height = 768;
+    osg::Vec3d eye{ 0, -42, 4.5 }, center{ 0, 10, -1 }, up{ 0, 0, 1 };
+    double time = 10.0;            // simulation time of the first frame
+    bool headless = false;
+    int frames = 60;
+    bool compare = true;           // headless: also time the scene without water
+    std::string screenshot = "osgwaterlake.png";
+    bool hud = true;
+
+    static void describe(osg::ApplicationUsage& usage);
+    //! Reads the options; false (with a message) on an error.
+    bool read(osg::ArgumentParser& args);
+    //! Applies the water options given on the command line to a WaterNode's settings.
+    void apply(osgWater::WaterNode& water) const;
+
+private:
+    std::vector<std::function<void(osgWater::WaterSettings&)>> _setters;
+};
+
+//! The scene file: as given, else under the source tree's data/ or the installed share/osgWater/.
+std::string findSceneFile(const std::string& name);

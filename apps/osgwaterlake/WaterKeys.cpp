@@ -1,0 +1,47 @@
+#include "WaterKeys.h"
+
+using osgWater::WaterSettings;
+
+bool WaterKeys::handle(const osgGA::GUIEventAdapter& ea, osgGA::GUIActionAdapter&)
+{
+    if (ea.getEventType() != osgGA::GUIEventAdapter::KEYDOWN) return false;
+    WaterSettings& s = *_water->getSettings();
+    switch (ea.getKey()) {
+    case 'r': s.setReflectionEnabled(!s.getReflectionEnabled()); return true;
+    case 'f': s.setRefractionEnabled(!s.getRefractionEnabled()); return true;
+    case 't': s.setRefractionLookup(s.getRefractionLookup() == WaterSettings::ITERATIVE ? WaterSettings::ONE_STEP : WaterSettings::ITERATIVE); return true;
+    case '+': case '=': s.setSearchSteps(std::min(s.getSearchSteps() + 1, 8)); return true;
+    case '-': s.setSearchSteps(std::max(s.getSearchSteps() - 1, 1)); return true;
+    case 'm': s.setFresnelModel(WaterSettings::FresnelModel((int(s.getFresnelModel()) + 1) % 3)); return true;
+    case 'o': s.setRefractionCameraRotation(!s.getRefractionCameraRotation()); return true;
+    default: break;
+    }
+    return false;
+}
+
+bool WalkManipulator::handleKeyDown(const osgGA::GUIEventAdapter& ea, osgGA::GUIActionAdapter& aa)
+{
+    const double step = 0.5;
+    switch (ea.getKey()) {
+    case osgGA::GUIEventAdapter::KEY_Up: moveForward(step); break;
+    case osgGA::GUIEventAdapter::KEY_Down: moveForward(-step); break;
+    case osgGA::GUIEventAdapter::KEY_Left: moveRight(-step); break;
+    case osgGA::GUIEventAdapter::KEY_Right: moveRight(step); break;
+    case osgGA::GUIEventAdapter::KEY_Page_Up: moveUp(step); break;
+    case osgGA::GUIEventAdapter::KEY_Page_Down: moveUp(-step); break;
+    default: return osgGA::FirstPersonManipulator::handleKeyDown(ea, aa);
+    }
+    aa.requestRedraw();
+    return true;
+}
+
+void WaterKeys::getUsage(osg::ApplicationUsage& u) const
+{
+    u.addKeyboardMouseBinding("r", "Toggle reflection");
+    u.addKeyboardMouseBinding("f", "Toggle refraction");
+    u.addKeyboardMouseBinding("t", "Switch refraction lookup (iterative / one-step)");
+    u.addKeyboardMouseBinding("+/-", "More / fewer search steps");
+    u.addKeyboardMouseBinding("m", "Next Fresnel model");
+    u.addKeyboardMouseBinding("o", "Toggle refraction-camera rotation");
+    u.addKeyboardMouseBinding("Arrows, Page Up/Down", "Move the camera");
+}

@@ -1,0 +1,161 @@
+// osgwaterlake: the thesis's lake demo (ch. 10) on OpenSceneGraph. Loads a scene (default
+// data/lake.osgt: a WaterNode over the OBJ lake), shows it in a window with the frame rate, or
+// renders it headless: N frames off-screen, a PNG screenshot and the median frame time, with and
+// without the water, measured in one run.
+#include "Hud.h"
+#include "LakeOptions.h"
+#include "WaterKeys.h"
+#include "../common/FrameTimer.h"
+#include <osgDB/FileNameUtils>
+#include <osgDB/ReadFile>
+#include <osgDB/WriteFile>
+#include <osgGA/KeySwitchMatrixManipulator>
+#include <osgGA/StateSetManipulator>
+#include <osgGA/TrackballManipulator>
+#include <osgViewer/ViewerEventHandlers>
+#include <osg/Switch>
+#include <osg/Timer>
+#include <cstdio>
+#include <iostream>
+
+namespace {
+
+class FindWater : public osg::NodeVisitor
+{
+public:
+    FindWater() : osg::NodeVisitor(TRAVERSE_ALL_CHILDREN) {}
+    void apply(osg::Group& g) override
+    {
+        if (!found) found = dynamic_cast<osgWater::WaterNode*>(&g);
+        if (!found) traverse(g);
+    }
+    osgWater::WaterNode* found = nullptr;
+};
+
+int runHeadless(osgViewer::Viewer& viewer, osg::Switch* scenes, osgWater::WaterNode* water, const LakeOptions& o)
+{
+    viewer.getCamera()->setViewMatrixAsLookAt(o.eye, o.center, o.up);
+    std::vector<double> waterMs, plainMs, reflMs, refrMs;
+    double t = o.time;
+    const double dt = 1.0 / 60.0;
+    // alternating blocks, so drifts in machine load hit both scenes alike
+    const int blocks = o.compare ? 5 : 1, perBlock = std::max(o.frames / blocks, 1);
+    for (int b = 0; b < blocks; ++b)
+        for (int which = 0; which < (o.compare ? 2 : 1); ++which) {
+            scenes->setSingleChildOn(which);
+            for (int i = 0; i <= perBlock; ++i) {
+                const osg::Timer_t t0 = osg::Timer::instance()->tick();
+                viewer.frame(t);
+                t += dt;
+                const double ms = osg::Timer::instance()->delta_m(t0, osg::Timer::instance()->tick());
+                if (i == 0) continue; // the first frame after a switch warms up
+                (which == 0 ? waterMs : plainMs).push_back(ms);
+                if (which == 0) {
+                    if (osgWater::ViewPasses* p = water->getViewPasses(viewer.getCamera())) {
+                        if (p->getReflectionMilliseconds() >= 0) reflMs.push_back(p->getReflectionMilliseconds());
+                        if (p->getRefractionMilliseconds() >= 0) refrMs.push_back(p->getRefractionMilliseconds());
+                    }
+                }
+            }
+        }
+    scenes->setSingleChildOn(0);
+    osg::ref_ptr<osg::Image> image = osgWaterApps::captureFrame(viewer, o.time); // the screenshot is at the start time
+    if (!image.valid() || !osgDB::writeImageFile(*image, o.screenshot)) {
+        std::cerr << "error: could not write the screenshot " << o.screenshot << std::endl;
+        return 1;
+    }
+    std::cout << "screenshot: " << o.screenshot << std::endl;
+    std::cout << "settings: " << describeSettings(*water->getSettings()) << std::endl;
+    const double w = osgWaterApps::median(waterMs), p = osgWaterApps::median(plainMs);
+    std::printf("median frame time: water %.2f ms (%zu frames)", w, waterMs.size());
+    if (!plainMs.empty()) std::printf(", without water %.2f ms (%zu frames), ratio %.2f", p, plainMs.size(), p > 0 ? w / p : 0.0);
+    std::printf("\nmedian pass GPU time: reflection %.2f ms, refraction %.2f ms\n", osgWaterApps::median(reflMs),
+                osgWaterApps::median(refrMs));
+    return 0;
+}
+
+int runWindowed(osgViewer::Viewer& viewer, osgWater::WaterNode* water, const LakeOptions& o)
+{
+    osg::ref_ptr<WalkManipulator> walker = new WalkManipulator;
+    walker->setHomePosition(o.eye, o.center, o.up);
+    osg::ref_ptr<osgGA::TrackballManipulator> trackball = new osgGA::TrackballManipulator;
+    trackball->setHomePosition(o.eye, o.center, o.up);
+    osg::ref_ptr<osgGA::KeySwitchMatrixManipulator> manipulators = new osgGA::KeySwitchMatrixManipulator;
+    manipulators->addMatrixManipulator('1', "Walk", walker.get());
+    manipulators->addMatrixManipulator('2', "Trackball", trackball.get());
+    viewer.setCameraManipulator(manipulators.get());
+    viewer.addEventHandler(new osgViewer::StatsHandler);
+    viewer.addEventHandler(new osgViewer::HelpHandler(osg::ApplicationUsage::instance()));
+    viewer.addEventHandler(new WaterKeys(water));
+    osg::ref_ptr<osgViewer::ScreenCaptureHandler::WriteToFile> writer = new osgViewer::ScreenCaptureHandler::WriteToFile(
+        osgDB::getNameLessExtension(o.screenshot), osgDB::getFileExtension(o.screenshot),
+        osgViewer::ScreenCaptureHandler::WriteToFile::OVERWRITE);
+    osg::ref_ptr<osgViewer::ScreenCaptureHandler> capture = new osgViewer::ScreenCaptureHandler(writer.get());
+    viewer.addEventHandler(capture.get());
+    viewer.realize();
+    std::vector<double> frameMs;
+    while (!viewer.done()) {
+        const osg::Timer_t t0 = osg::Timer::instance()->tick();
+        viewer.frame(o.time + viewer.getFrameStamp()->getReferenceTime());
+        frameMs.push_back(osg::Timer::instance()->delta_m(t0, osg::Timer::instance()->tick()));
+        if (frameMs.size() == 60) {
+            capture->captureNextFrame(viewer); // one screenshot once things have settled ('c' takes more)
+            std::cout << "screenshot: " << o.screenshot << std::endl;
+        }
+    }
+    std::printf("median frame time: %.2f ms (%zu frames)\n", osgWaterApps::median(frameMs), frameMs.size());
+    return 0;
+}
+
+}
+
+int main(int argc, char** argv)
+{
+    osg::ArgumentParser args(&argc, argv);
+    LakeOptions::describe(*args.getApplicationUsage()); // the global usage, shown by the help handler too
+    if (args.read("-h") || args.read("--help")) {
+        args.getApplicationUsage()->write(std::cout);
+        return 0;
+    }
+    LakeOptions o;
+    if (!o.read(args)) return 1;
+
+    const std::string file = findSceneFile(o.scene);
+    if (file.empty()) {
+        std::cerr << "error: scene file " << o.scene << " not found (build first: the lake's OBJ is generated into data/lake/)" << std::endl;
+        return 1;
+    }
+    osg::ref_ptr<osg::Node> loaded = osgDB::readRefNodeFile(file);
+    if (!loaded.valid()) {
+        std::cerr << "error: could not read " << file << std::endl;
+        return 1;
+    }
+    FindWater find;
+    loaded->accept(find);
+    osg::ref_ptr<osgWater::WaterNode> water = find.found;
+    if (!water.valid()) { // any model: put water under it
+        std::cout << file << " has no osgWater::WaterNode: adding water at z = 0" << std::endl;
+        water = new osgWater::WaterNode;
+        water->addChild(loaded.get());
+        loaded = water;
+    }
+    o.apply(*water);
+    water->setPassTimingEnabled(true);
+
+    // the same scene without the water, for the frame-time baseline
+    osg::ref_ptr<osg::Group> plain = new osg::Group;
+    for (unsigned i = 0; i < water->getNumChildren(); ++i) plain->addChild(water->getChild(i));
+    osg::ref_ptr<osg::Switch> scenes = new osg::Switch;
+    scenes->addChild(loaded.get(), true);
+    scenes->addChild(plain.get(), false);
+    osg::ref_ptr<osg::Group> root = new osg::Group;
+    root->addChild(scenes.get());
+
+    osgViewer::Viewer viewer(args);
+    if (!osgWaterApps::setUpViewer(viewer, o.headless, o.width, o.height)) return 1;
+    viewer.getCamera()->setFinalDrawCallback(new osgWaterApps::FinishFrame);
+    viewer.getCamera()->setClearColor(osg::Vec4(0.55f, 0.7f, 0.9f, 1.0f));
+    if (o.hud) root->addChild(createHud(water.get(), viewer.getCamera(), o.width, o.height));
+    viewer.setSceneData(root.get());
+    return o.headless ? runHeadless(viewer, scenes.get(), water.get(), o) : runWindowed(viewer, water.get(), o);
+}

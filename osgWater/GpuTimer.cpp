@@ -1,0 +1,76 @@
+#include <osgWater/GpuTimer>
+#include <osg/GLExtensions>
+#include <osg/RenderInfo>
+#include <osg/State>
+#include <osg/Notify>
+
+using namespace osgWater;
+
+#ifndef GL_TIME_ELAPSED
+#define GL_TIME_ELAPSED 0x88BF
+#endif
+#ifndef GL_QUERY_RESULT_AVAILABLE
+#define GL_QUERY_RESULT_AVAILABLE 0x8867
+#endif
+#ifndef GL_QUERY_RESULT
+#define GL_QUERY_RESULT 0x8866
+#endif
+
+namespace {
+struct Begin : public osg::Camera::DrawCallback {
+    osg::observer_ptr<GpuTimer> timer;
+    explicit Begin(GpuTimer* t) : timer(t) {}
+    void operator()(osg::RenderInfo& ri) const override { if (osg::ref_ptr<GpuTimer> t = timer.get()) t->begin(ri); }
+};
+struct End : public osg::Camera::DrawCallback {
+    osg::observer_ptr<GpuTimer> timer;
+    explicit End(GpuTimer* t) : timer(t) {}
+    void operator()(osg::RenderInfo& ri) const override { if (osg::ref_ptr<GpuTimer> t = timer.get()) t->end(ri); }
+};
+}
+
+GpuTimer::GpuTimer() : _ms(-1.0) {}
+
+void GpuTimer::attach(osg::Camera* camera)
+{
+    camera->setInitialDrawCallback(new Begin(this));
+    camera->setFinalDrawCallback(new End(this));
+}
+
+void GpuTimer::detach(osg::Camera* camera)
+{
+    camera->setInitialDrawCallback(nullptr);
+    camera->setFinalDrawCallback(nullptr);
+}
+
+void GpuTimer::begin(osg::RenderInfo& ri)
+{
+    if (_failed) return;
+    osg::GLExtensions* ext = ri.getState()->get<osg::GLExtensions>();
+    if (!ext || !ext->isTimerQuerySupported || !ext->glGenQueries) {
+        OSG_NOTICE << "osgWater::GpuTimer: no GL timer queries here, pass times are not measured" << std::endl;
+        _failed = true;
+        return;
+    }
+    if (_query == 0) ext->glGenQueries(1, &_query);
+    if (_pending) {
+        GLint available = 0;
+        ext->glGetQueryObjectiv(_query, GL_QUERY_RESULT_AVAILABLE, &available);
+        if (!available) return; // last frame's result not there yet: skip this frame's measurement
+        GLuint64 ns = 0;
+        ext->glGetQueryObjectui64v(_query, GL_QUERY_RESULT, &ns);
+        _ms = double(ns) * 1.0e-6;
+        _pending = false;
+    }
+    ext->glBeginQuery(GL_TIME_ELAPSED, _query);
+    _active = true;
+}
+
+void GpuTimer::end(osg::RenderInfo& ri)
+{
+    if (!_active) return;
+    osg::GLExtensions* ext = ri.getState()->get<osg::GLExtensions>();
+    ext->glEndQuery(GL_TIME_ELAPSED);
+    _active = false;
+    _pending = true;
+}
