@@ -8,6 +8,7 @@
 #include <osg/ArgumentParser>
 #include <osg/Image>
 #include <osg/ProxyNode>
+#include <osg/CullFace>
 #include <osgDB/FileUtils>
 #include <osgDB/WriteFile>
 #include <cmath>
@@ -264,9 +265,15 @@ bool writeObj(const std::string& dir, int grid, int grassBlades, int weedBlades,
     obj.group("crate", "crate"); // submerged: visible only through the water
     const float cz = lake::height(lake::kCrateX, lake::kCrateY);
     box(obj, osg::Vec3(lake::kCrateX - 1.0f, lake::kCrateY - 0.8f, cz - 0.2f), osg::Vec3(lake::kCrateX + 1.0f, lake::kCrateY + 0.8f, cz + 1.2f));
-    skyDome(obj, 400.0f);
     nv = obj.vertices();
     nf = obj.faces();
+    // the sky in its own file: lake.osgt culls its back faces, so from outside (osgviewer's home
+    // view) it does not hide the lake
+    ObjWriter sky(dir + "/sky.obj", "lake.mtl");
+    if (!sky.ok()) return false;
+    skyDome(sky, 110.0f);
+    nv += sky.vertices();
+    nf += sky.faces();
     return true;
 }
 
@@ -279,6 +286,11 @@ bool writeOsgt(const std::string& path)
     scene->setFileName(0, "lake/lake.obj");
     scene->setLoadingExternalReferenceMode(osg::ProxyNode::LOAD_IMMEDIATELY);
     water->addChild(scene.get());
+    osg::ref_ptr<osg::ProxyNode> sky = new osg::ProxyNode;
+    sky->setFileName(0, "lake/sky.obj");
+    sky->setLoadingExternalReferenceMode(osg::ProxyNode::LOAD_IMMEDIATELY);
+    sky->getOrCreateStateSet()->setAttributeAndModes(new osg::CullFace(osg::CullFace::BACK), osg::StateAttribute::ON);
+    water->addChild(sky.get());
     return osgDB::writeNodeFile(*water, path);
 }
 
@@ -307,7 +319,7 @@ int main(int argc, char** argv)
         std::cerr << "error: cannot write the lake into " << dir << std::endl;
         return 1;
     }
-    std::cout << "lake: " << nv << " vertices, " << nf << " faces in " << dir << "/lake.obj" << std::endl;
+    std::cout << "lake: " << nv << " vertices, " << nf << " faces in " << dir << "/lake.obj and sky.obj" << std::endl;
     if (!osgt.empty() && !writeOsgt(osgt)) {
         std::cerr << "error: cannot write " << osgt << std::endl;
         return 1;
