@@ -1,12 +1,12 @@
 #!/usr/bin/env bash
-# Installs dependencies, builds, and runs the demo: in a window when a display exists, otherwise
-# headless (off-screen), writing a screenshot and printing the median frame time.
+# Installs dependencies, builds, and runs the lake demo: in a window when a display exists,
+# otherwise headless (off-screen), writing a screenshot and printing the median frame time.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
 bash scripts/build.sh
 if [ -n "${DISPLAY:-}" ]; then
-  ./build/apps/osgwaterdemo/osgwaterdemo --screenshot osgwaterdemo.png "$@"
+  ./build/apps/osgwaterlake/osgwaterlake --screenshot osgwaterlake.png "$@"
 else
-  bash scripts/with-display.sh ./build/apps/osgwaterdemo/osgwaterdemo --headless --screenshot osgwaterdemo.png "$@"
+  bash scripts/with-display.sh ./build/apps/osgwaterlake/osgwaterlake --headless --screenshot osgwaterlake.png "$@"
 fi

@@ -1,0 +1,133 @@
+// The lake demo, run headless as a user would run it, and its screenshot checked for what can only
+// be there if the water works: trees mirrored below the shoreline, the bed visible through shallow
+// water and not through deep water. Each effect is switched off once to show the check depends on it.
+#include "GLHarness.h"
+#include "../apps/osgwatergenlake/LakeModel.h"
+#include <osgDB/ReadFile>
+#include <osg/io_utils>
+#include <cmath>
+#include <cstdlib>
+
+namespace {
+
+const int W = 480, H = 360;
+const osg::Vec3d kEye(0, -42, 4.5), kCenter(0, 10, -1);
+
+struct Shot {
+    osg::ref_ptr<osg::Image> image;
+    osg::Vec3 at(const osg::Vec2d& px) const
+    {
+        const unsigned char* p = image->data(int(px.x()), int(px.y()));
+        return osg::Vec3(p[0], p[1], p[2]) / 255.0f;
+    }
+};
+
+bool runDemo(const std::string& extra, Shot& shot, std::string& why)
+{
+    if (!std::getenv("DISPLAY")) { why = "DISPLAY is not set"; return false; }
+    const std::string png = std::string(OSGWATER_TEST_TMP) + "/lake_" + std::to_string(std::hash<std::string>()(extra) % 100000) + ".png";
+    std::remove(png.c_str());
+    char cmd[2048];
+    std::snprintf(cmd, sizeof(cmd),
+                  "\"%s\" \"%s\" --headless --no-hud --no-compare --frames 2 --size %d %d --eye %g %g %g --center %g %g %g "
+                  "--time 10 --screenshot \"%s\" %s > /dev/null 2>&1",
+                  OSGWATER_LAKE_APP, OSGWATER_LAKE_SCENE, W, H, kEye.x(), kEye.y(), kEye.z(), kCenter.x(), kCenter.y(),
+                  kCenter.z(), png.c_str(), extra.c_str());
+    const int rc = std::system(cmd);
+    if (rc != 0) { why = std::string("osgwaterlake failed: ") + cmd; return false; }
+    shot.image = osgDB::readRefImageFile(png);
+    if (!shot.image.valid()) { why = "no screenshot " + png; return false; }
+    return true;
+}
+
+// pixel (origin bottom left, as osg::Image) of a world point in the demo's camera
+osg::Vec2d project(const osg::Vec3d& p)
+{
+    const osg::Matrixd vp = osg::Matrixd::lookAt(kEye, kCenter, osg::Vec3d(0, 0, 1)) *
+                            osg::Matrixd::perspective(45.0, double(W) / H, 0.1, 2000.0);
+    const osg::Vec4d c = osg::Vec4d(p, 1.0) * vp;
+    return osg::Vec2d((c.x() / c.w() * 0.5 + 0.5) * W, (c.y() / c.w() * 0.5 + 0.5) * H);
+}
+
+float luminance(const osg::Vec3& c) { return 0.2126f * c.x() + 0.7152f * c.y() + 0.0722f * c.z(); }
+
+// where the eye ray through a pixel meets the water plane, if nothing above the water is in the way
+bool waterPoint(int x, int y, osg::Vec3d& hit)
+{
+    const osg::Matrixd inv = osg::Matrixd::inverse(osg::Matrixd::lookAt(kEye, kCenter, osg::Vec3d(0, 0, 1)) *
+                                                   osg::Matrixd::perspective(45.0, double(W) / H, 0.1, 2000.0));
+    const double nx = (x + 0.5) / W * 2 - 1, ny = (y + 0.5) / H * 2 - 1;
+    osg::Vec3d d = osg::Vec3d(nx, ny, 1) * inv - osg::Vec3d(nx, ny, -1) * inv;
+    d.normalize();
+    if (d.z() > -0.02) return false;
+    const double t = -kEye.z() / d.z();
+    for (double s = 0.5; s < t; s += 0.5) { // terrain, trees' ground, shore in front of the water?
+        const osg::Vec3d p = kEye + d * s;
+        if (lake::height(float(p.x()), float(p.y())) > p.z() - 0.3) return false;
+    }
+    hit = kEye + d * t;
+    return lake::height(float(hit.x()), float(hit.y())) < -0.05f;
+}
+
+}
+
+struct Probe { bool v; std::string w; bool ok() const { return v; } const std::string& why() const { return w; } };
+
+TEST(LakeDemo, TreesAreMirroredBelowTheShoreline)
+{
+    Shot on, off;
+    std::string why;
+    Probe p{ runDemo("", on, why), why };
+    REQUIRE_GL(p);
+    ASSERT_TRUE(runDemo("--no-reflection", off, why)) << why;
+    int mirrored = 0, checked = 0;
+    for (const lake::Tree& t : lake::kTrees) {
+        const float base = lake::height(t.x, t.y);
+        const osg::Vec3d crown(t.x, t.y, -(base + 0.5 * t.height));        // mirror image of the crown's middle
+        const osg::Vec3d beside(t.x + 0.45 * t.height, t.y, -(base + 0.9 * t.height)); // mirror image of sky beside it
+        const osg::Vec2d a = project(crown), b = project(beside);
+        const osg::Vec2d shore = project(osg::Vec3d(t.x, t.y, base));
+        if (a.x() < 5 || a.x() > W - 5 || b.x() < 5 || b.x() > W - 5 || a.y() < 5 || b.y() < 5) continue;
+        ++checked;
+        EXPECT_LT(a.y(), shore.y()) << "a mirror image lies below the shoreline";
+        const float ratioOn = luminance(on.at(a)) / std::max(luminance(on.at(b)), 1e-3f);
+        const float ratioOff = luminance(off.at(a)) / std::max(luminance(off.at(b)), 1e-3f);
+        // the dark crown in the water next to bright reflected sky; without reflection both are water
+        if (ratioOn < 0.75f && ratioOff > 0.85f) ++mirrored;
+        RecordProperty("tree_" + std::to_string(checked), std::to_string(ratioOn) + " / " + std::to_string(ratioOff));
+    }
+    ASSERT_GE(checked, 3);
+    EXPECT_GE(mirrored, checked - 1) << mirrored << " of " << checked << " trees mirrored";
+}
+
+TEST(LakeDemo, BedVisibleInShallowWaterNotInDeep)
+{
+    // reflection off, so the sky mirrored at grazing angles does not hide what refraction shows
+    Shot on, off;
+    std::string why;
+    Probe p{ runDemo("--no-reflection", on, why), why };
+    REQUIRE_GL(p);
+    ASSERT_TRUE(runDemo("--no-reflection --no-refraction", off, why)) << why;
+    osg::Vec3 shallowOn, deepOn, shallowOff;
+    int nShallow = 0, nDeep = 0;
+    for (int y = 0; y < H / 2; y += 3)
+        for (int x = 0; x < W; x += 3) {
+            osg::Vec3d hit;
+            if (!waterPoint(x, y, hit)) continue;
+            if ((osg::Vec2d(hit.x(), hit.y()) - osg::Vec2d(lake::kCrateX, lake::kCrateY)).length() < 4.0) continue;
+            const float depth = -lake::height(float(hit.x()), float(hit.y()));
+            if (depth > 0.2f && depth < 1.0f) { shallowOn += on.at(osg::Vec2d(x, y)); shallowOff += off.at(osg::Vec2d(x, y)); ++nShallow; }
+            if (depth > 6.0f) { deepOn += on.at(osg::Vec2d(x, y)); ++nDeep; }
+        }
+    ASSERT_GT(nShallow, 50);
+    ASSERT_GT(nDeep, 50);
+    shallowOn /= float(nShallow);
+    shallowOff /= float(nShallow);
+    deepOn /= float(nDeep);
+    // sand through shallow water (red channel: water colour has none), the water colour over deep water
+    EXPECT_GT(shallowOn.x(), 0.25f) << "shallow " << shallowOn;
+    EXPECT_LT(deepOn.x(), 0.08f) << "deep " << deepOn;
+    EXPECT_GT(luminance(shallowOn), luminance(deepOn) + 0.1f);
+    // and it is the refraction that shows it
+    EXPECT_LT(shallowOff.x(), shallowOn.x() - 0.1f) << "without refraction " << shallowOff;
+}
