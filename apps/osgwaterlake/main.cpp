@@ -32,6 +32,16 @@ public:
     osgWater::WaterNode* found = nullptr;
 };
 
+// OSG's WriteToFile adds the context number to the name; the screenshot goes where it was asked to
+struct WriteExactly : public osgViewer::ScreenCaptureHandler::CaptureOperation {
+    explicit WriteExactly(const std::string& f) : file(f) {}
+    void operator()(const osg::Image& image, const unsigned int) override
+    {
+        if (!osgDB::writeImageFile(image, file)) std::cerr << "error: could not write the screenshot " << file << std::endl;
+    }
+    std::string file;
+};
+
 int runHeadless(osgViewer::Viewer& viewer, osg::Switch* scenes, osgWater::WaterNode* water, const LakeOptions& o)
 {
     viewer.getCamera()->setViewMatrixAsLookAt(o.eye, o.center, o.up);
@@ -83,14 +93,13 @@ int runWindowed(osgViewer::Viewer& viewer, osgWater::WaterNode* water, const Lak
     osg::ref_ptr<osgGA::KeySwitchMatrixManipulator> manipulators = new osgGA::KeySwitchMatrixManipulator;
     manipulators->addMatrixManipulator('1', "Walk", walker.get());
     manipulators->addMatrixManipulator('2', "Trackball", trackball.get());
+    manipulators->setAutoComputeHomePosition(false); // start at --eye/--center, not at the bound's edge
+    manipulators->setHomePosition(o.eye, o.center, o.up);
     viewer.setCameraManipulator(manipulators.get());
     viewer.addEventHandler(new osgViewer::StatsHandler);
     viewer.addEventHandler(new osgViewer::HelpHandler(osg::ApplicationUsage::instance()));
     viewer.addEventHandler(new WaterKeys(water));
-    osg::ref_ptr<osgViewer::ScreenCaptureHandler::WriteToFile> writer = new osgViewer::ScreenCaptureHandler::WriteToFile(
-        osgDB::getNameLessExtension(o.screenshot), osgDB::getFileExtension(o.screenshot),
-        osgViewer::ScreenCaptureHandler::WriteToFile::OVERWRITE);
-    osg::ref_ptr<osgViewer::ScreenCaptureHandler> capture = new osgViewer::ScreenCaptureHandler(writer.get());
+    osg::ref_ptr<osgViewer::ScreenCaptureHandler> capture = new osgViewer::ScreenCaptureHandler(new WriteExactly(o.screenshot));
     viewer.addEventHandler(capture.get());
     viewer.realize();
     std::vector<double> frameMs;
@@ -153,7 +162,9 @@ int main(int argc, char** argv)
 
     osgViewer::Viewer viewer(args);
     if (!osgWaterApps::setUpViewer(viewer, o.headless, o.width, o.height)) return 1;
-    viewer.getCamera()->setFinalDrawCallback(new osgWaterApps::FinishFrame);
+    // headless timing must include the GPU work; a window leaves the final draw callback free for
+    // the ScreenCaptureHandler (replacing it while the draw thread runs it would crash)
+    if (o.headless) viewer.getCamera()->setFinalDrawCallback(new osgWaterApps::FinishFrame);
     viewer.getCamera()->setClearColor(osg::Vec4(0.55f, 0.7f, 0.9f, 1.0f));
     if (o.hud) root->addChild(createHud(water.get(), viewer.getCamera(), o.width, o.height));
     viewer.setSceneData(root.get());
