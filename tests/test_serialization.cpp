@@ -4,6 +4,7 @@
 #include <osgDB/Registry>
 #include <osgDB/WriteFile>
 #include <osg/Notify>
+#include "WarnCapture.h"
 #include <gtest/gtest.h>
 #include <cmath>
 #include <fstream>
@@ -58,17 +59,6 @@ osg::ref_ptr<WaterNode> pond()
     return w;
 }
 
-struct WarnCapture : public osg::NotifyHandler {
-    std::ostringstream text;
-    void notify(osg::NotifySeverity, const char* message) override { text << message; }
-};
-struct ScopedWarnCapture {
-    osg::ref_ptr<WarnCapture> capture = new WarnCapture;
-    osg::ref_ptr<osg::NotifyHandler> previous = osg::getNotifyHandler();
-    ScopedWarnCapture() { osg::setNotifyHandler(capture.get()); }
-    ~ScopedWarnCapture() { osg::setNotifyHandler(previous.get()); }
-    std::string str() const { return capture->text.str(); }
-};
 
 osg::ref_ptr<WaterNode> readWater(const std::string& path)
 {

@@ -1,26 +1,13 @@
 // WaterSettings: thesis table 1 defaults, and clamping of absurd input with a warning.
 #include <osgWater/WaterSettings>
 #include <osg/Notify>
+#include "WarnCapture.h"
 #include <gtest/gtest.h>
 #include <cmath>
 #include <sstream>
 
 using namespace osgWater;
 
-namespace {
-// Captures OSG_WARN output so tests can check that clamping says so.
-struct WarnCapture : public osg::NotifyHandler {
-    std::ostringstream text;
-    void notify(osg::NotifySeverity, const char* message) override { text << message; }
-};
-struct ScopedWarnCapture {
-    osg::ref_ptr<WarnCapture> capture = new WarnCapture;
-    osg::ref_ptr<osg::NotifyHandler> previous = osg::getNotifyHandler();
-    ScopedWarnCapture() { osg::setNotifyHandler(capture.get()); }
-    ~ScopedWarnCapture() { osg::setNotifyHandler(previous.get()); }
-    std::string str() const { return capture->text.str(); }
-};
-}
 
 TEST(Settings, DefaultsAreThesisTable1)
 {
