@@ -34,8 +34,10 @@ public:
         _last = now;
         if (dt > 0 && dt < 10.0) _fps = _fps <= 0 ? 1.0 / dt : 0.9 * _fps + 0.1 / dt;
         osgWater::ViewPasses* p = _water->getViewPasses(_camera.get());
+        char fps[32] = "-- fps"; // until two frames have been seen
+        if (_fps > 0) std::snprintf(fps, sizeof(fps), "%.1f fps", _fps);
         char line[256];
-        std::snprintf(line, sizeof(line), "%.1f fps   reflection %.2f ms   refraction %.2f ms (GPU)\n", _fps,
+        std::snprintf(line, sizeof(line), "%s   reflection %.2f ms   refraction %.2f ms (GPU)\n", fps,
                       p ? p->getReflectionMilliseconds() : -1.0, p ? p->getRefractionMilliseconds() : -1.0);
         _text->setText(std::string(line) + describeSettings(*_water->getSettings()) +
                        "\nkeys: r reflection  f refraction  t technique  +/- steps  m fresnel  o rotation  s stats  arrows move");

@@ -42,8 +42,9 @@ struct WriteExactly : public osgViewer::ScreenCaptureHandler::CaptureOperation {
     std::string file;
 };
 
-int runHeadless(osgViewer::Viewer& viewer, osg::Switch* scenes, osgWater::WaterNode* water, const LakeOptions& o)
+int runHeadless(osgViewer::Viewer& viewer, osg::Switch* scenes, osgWater::WaterNode* water, osg::Node* hud, const LakeOptions& o)
 {
+    if (hud) hud->setNodeMask(0); // text costs the same with and without water: keep it out of the ratio
     viewer.getCamera()->setViewMatrixAsLookAt(o.eye, o.center, o.up);
     std::vector<double> waterMs, plainMs, reflMs, refrMs;
     double t = o.time;
@@ -69,6 +70,7 @@ int runHeadless(osgViewer::Viewer& viewer, osg::Switch* scenes, osgWater::WaterN
             }
         }
     scenes->setSingleChildOn(0);
+    if (hud) hud->setNodeMask(~0u);
     osg::ref_ptr<osg::Image> image = osgWaterApps::captureFrame(viewer, o.time); // the screenshot is at the start time
     if (!image.valid() || !osgDB::writeImageFile(*image, o.screenshot)) {
         std::cerr << "error: could not write the screenshot " << o.screenshot << std::endl;
@@ -166,7 +168,8 @@ int main(int argc, char** argv)
     // the ScreenCaptureHandler (replacing it while the draw thread runs it would crash)
     if (o.headless) viewer.getCamera()->setFinalDrawCallback(new osgWaterApps::FinishFrame);
     viewer.getCamera()->setClearColor(osg::Vec4(0.55f, 0.7f, 0.9f, 1.0f));
-    if (o.hud) root->addChild(createHud(water.get(), viewer.getCamera(), o.width, o.height));
+    osg::ref_ptr<osg::Camera> hud = o.hud ? createHud(water.get(), viewer.getCamera(), o.width, o.height) : nullptr;
+    if (hud.valid()) root->addChild(hud.get());
     viewer.setSceneData(root.get());
-    return o.headless ? runHeadless(viewer, scenes.get(), water.get(), o) : runWindowed(viewer, water.get(), o);
+    return o.headless ? runHeadless(viewer, scenes.get(), water.get(), hud.get(), o) : runWindowed(viewer, water.get(), o);
 }
