@@ -73,13 +73,19 @@ bool waterPoint(int x, int y, osg::Vec3d& hit)
 
 struct Probe { bool v; std::string w; bool ok() const { return v; } const std::string& why() const { return w; } };
 
+// the demo with `a` and with `b` added to its options (the second switches one effect off)
+#define RUN_DEMO_PAIR(a, b, first, second)                     \
+    Shot first, second;                                        \
+    {                                                          \
+        std::string why;                                       \
+        Probe p{ runDemo(a, first, why), why };                \
+        REQUIRE_GL(p);                                         \
+        ASSERT_TRUE(runDemo(b, second, why)) << why;           \
+    }
+
 TEST(LakeDemo, TreesAreMirroredBelowTheShoreline)
 {
-    Shot on, off;
-    std::string why;
-    Probe p{ runDemo("", on, why), why };
-    REQUIRE_GL(p);
-    ASSERT_TRUE(runDemo("--no-reflection", off, why)) << why;
+    RUN_DEMO_PAIR("", "--no-reflection", on, off);
     int mirrored = 0, checked = 0;
     for (const lake::Tree& t : lake::kTrees) {
         const float base = lake::height(t.x, t.y);
@@ -103,11 +109,7 @@ TEST(LakeDemo, TreesAreMirroredBelowTheShoreline)
 TEST(LakeDemo, BedVisibleInShallowWaterNotInDeep)
 {
     // reflection off, so the sky mirrored at grazing angles does not hide what refraction shows
-    Shot on, off;
-    std::string why;
-    Probe p{ runDemo("--no-reflection", on, why), why };
-    REQUIRE_GL(p);
-    ASSERT_TRUE(runDemo("--no-reflection --no-refraction", off, why)) << why;
+    RUN_DEMO_PAIR("--no-reflection", "--no-reflection --no-refraction", on, off);
     osg::Vec3 shallowOn, deepOn, shallowOff;
     int nShallow = 0, nDeep = 0;
     for (int y = 0; y < H / 2; y += 3)
