@@ -79,14 +79,13 @@ void WaterNode::traverse(osg::NodeVisitor& nv)
         osg::Group::traverse(nv);
         return;
     }
-    osgUtil::CullVisitor* cv = nv.asCullVisitor();
-    if (cv) {
+    if (osgUtil::CullVisitor* cv = nv.asCullVisitor()) {
         cull(*cv);
         return;
     }
     osg::Group::traverse(nv);
-    // intersections, bounds, statistics: the surface takes part like a child
-    if (nv.getVisitorType() != osg::NodeVisitor::UPDATE_VISITOR && _surface.valid()) _surface->accept(nv);
+    // intersections, statistics and the like: the surface takes part like a child
+    _surface->accept(nv);
 }
 
 void WaterNode::cull(osgUtil::CullVisitor& cv)
