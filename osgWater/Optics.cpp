@@ -116,7 +116,7 @@ BottomHit oneStepSearch(const glm::vec3& U, const glm::vec3& R, float scale, flo
     return r;
 }
 
-BottomHit iterativeSearch(const glm::vec3& U, const glm::vec3& R, int steps, const DepthLookup& lookup)
+BottomHit iterativeSearch(const glm::vec3& U, const glm::vec3& R, int steps, const DepthLookup& lookup, float tolerance)
 {
     BottomHit best;
     steps = std::min(std::max(steps, 1), 8);
@@ -132,7 +132,7 @@ BottomHit iterativeSearch(const glm::vec3& U, const glm::vec3& R, int steps, con
         if (!bottomAlongRay(W, lookup, A)) { W = 0.5f * (U + W); continue; } // sky: back towards U
         const float e = glm::length(A - W);
         if (e < best.error) { best.W = W; best.A = A; best.error = e; }
-        if (i == steps) break;
+        if (i == steps || e < tolerance) break; // converged: further lookups cannot do better by much
         // W_{i+1}: where p crosses the segment A_i A_{i+1} (eq. 3) ...
         glm::vec3 Wn;
         const glm::vec3 Q = A - Aprev;

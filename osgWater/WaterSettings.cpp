@@ -50,7 +50,7 @@ WaterSettings::WaterSettings()
       _waterColor(0.0f, 0.2f, 0.1f), _attenuation(0.5f),
       _fresnelModel(FRESNEL_SCHLICK), _fresnelExponent(5.0f),
       _reflectionScale(1.0f),
-      _refractionLookup(ITERATIVE), _searchSteps(3),
+      _refractionLookup(ITERATIVE), _searchSteps(3), _searchTolerance(0.01f),
       _oneStepScale(1.0f), _oneStepMaxDepth(20.0f), _underwaterLookupScale(1.5f),
       _fovExtNear(1.5f), _fovExtFar(1.2f), _fovExtFalloff(10.0f),
       _clipOffset(0.05f),
@@ -72,7 +72,7 @@ WaterSettings::WaterSettings(const WaterSettings& o, const osg::CopyOp& copyop)
     : osg::Object(o, copyop),
       _airIOR(o._airIOR), _waterIOR(o._waterIOR), _waterColor(o._waterColor), _attenuation(o._attenuation),
       _fresnelModel(o._fresnelModel), _fresnelExponent(o._fresnelExponent), _reflectionScale(o._reflectionScale),
-      _refractionLookup(o._refractionLookup), _searchSteps(o._searchSteps),
+      _refractionLookup(o._refractionLookup), _searchSteps(o._searchSteps), _searchTolerance(o._searchTolerance),
       _oneStepScale(o._oneStepScale), _oneStepMaxDepth(o._oneStepMaxDepth),
       _underwaterLookupScale(o._underwaterLookupScale),
       _fovExtNear(o._fovExtNear), _fovExtFar(o._fovExtFar), _fovExtFalloff(o._fovExtFalloff),
@@ -92,6 +92,7 @@ void WaterSettings::setAttenuation(float k) { _attenuation = clampOr("attenuatio
 void WaterSettings::setFresnelExponent(float q) { _fresnelExponent = clampOr("fresnelExponent", q, 0.1f, 64.0f, 5.0f); touch(); }
 void WaterSettings::setReflectionScale(float c) { _reflectionScale = clampOr("reflectionScale", c, 0.0f, 1000.0f, 1.0f); touch(); }
 void WaterSettings::setSearchSteps(int n) { _searchSteps = clampInt("searchSteps", n, 1, 8); touch(); }
+void WaterSettings::setSearchTolerance(float m) { _searchTolerance = clampOr("searchTolerance", m, 0.0f, 10.0f, 0.01f); touch(); }
 void WaterSettings::setOneStepScale(float s) { _oneStepScale = clampOr("oneStepScale", s, 0.0f, 100.0f, 1.0f); touch(); }
 void WaterSettings::setOneStepMaxDepth(float d) { _oneStepMaxDepth = clampOr("oneStepMaxDepth", d, 0.0f, 1.0e4f, 20.0f); touch(); }
 void WaterSettings::setUnderwaterLookupScale(float m) { _underwaterLookupScale = clampOr("underwaterLookupScale", m, 0.0f, 1000.0f, 1.5f); touch(); }

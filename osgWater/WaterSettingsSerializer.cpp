@@ -30,6 +30,7 @@ REGISTER_OBJECT_WRAPPER(osgWater_WaterSettings, new osgWater::WaterSettings, osg
         ADD_ENUM_VALUE(ITERATIVE);
     END_ENUM_SERIALIZER();
     ADD_INT_SERIALIZER(SearchSteps, 3);
+    ADD_FLOAT_SERIALIZER(SearchTolerance, 0.01f);
     ADD_FLOAT_SERIALIZER(OneStepScale, 1.0f);
     ADD_FLOAT_SERIALIZER(OneStepMaxDepth, 20.0f);
     ADD_FLOAT_SERIALIZER(UnderwaterLookupScale, 1.5f);

@@ -60,7 +60,7 @@ WaterStateSets::WaterStateSets()
     _water->addUniform(waves.get());
     _water->addUniform(phases.get());
     const char* floats[] = { "osgWater_Level", "osgWater_Attenuation", "osgWater_FresnelQ", "osgWater_ReflectionScale",
-                             "osgWater_UnderwaterScale" };
+                             "osgWater_UnderwaterScale", "osgWater_SearchTolerance" };
     for (const char* f : floats) _water->addUniform(new osg::Uniform(f, 0.0f));
     _water->addUniform(new osg::Uniform("osgWater_WaveCount", 0));
     _water->addUniform(new osg::Uniform("osgWater_SearchSteps", 3));
@@ -82,6 +82,7 @@ void WaterStateSets::applySettings(const WaterSettings& s, const WaterSurface& s
     w->getUniform("osgWater_ReflectionScale")->set(s.getReflectionScale());
     w->getUniform("osgWater_UnderwaterScale")->set(s.getUnderwaterLookupScale());
     w->getUniform("osgWater_SearchSteps")->set(s.getSearchSteps());
+    w->getUniform("osgWater_SearchTolerance")->set(s.getSearchTolerance());
     w->getUniform("osgWater_OneStep")->set(osg::Vec2f(s.getOneStepScale(), s.getOneStepMaxDepth()));
     w->getUniform("osgWater_Level")->set(float(surface.getLevel()));
 

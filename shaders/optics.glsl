@@ -99,11 +99,12 @@ owBottomHit owOneStepSearch(vec3 U, vec3 R, float scale, float maxDv)
     return r;
 }
 
-// Thesis §7.1: candidates W_1..W_steps, keep the one with the smallest |A - W|.
+// Thesis §7.1: candidates W_1..W_steps, keep the one with the smallest |A - W|; stop early once
+// a candidate is within `tolerance` of its bottom point.
 // A candidate whose camera ray sees sky (it went under a clipped shore, or off the texture) is
 // no bottom: the next candidate is half way back towards U. If no candidate sees a bottom, A_1
 // (the bottom straight behind U, no refraction offset) is the answer: better than none.
-owBottomHit owIterativeSearch(vec3 U, vec3 R, int steps)
+owBottomHit owIterativeSearch(vec3 U, vec3 R, int steps, float tolerance)
 {
     owBottomHit best = owBottomHit(false, U, U, 0.0);
     vec3 Aprev;
@@ -116,7 +117,7 @@ owBottomHit owIterativeSearch(vec3 U, vec3 R, int steps)
         if (!owBottomAlongRay(W, A)) { W = 0.5 * (U + W); continue; }
         float e = length(A - W);
         if (e < best.error) { best.W = W; best.A = A; best.error = e; }
-        if (i == steps) break;
+        if (i == steps || e < tolerance) break; // converged: saves the remaining lookups
         vec3 Wn;
         vec3 Q = A - Aprev;
         bool ok = owLineIntersection(U, R, Aprev, Q, Wn)

@@ -20,6 +20,7 @@ uniform float osgWater_Attenuation;         // k
 uniform float osgWater_FresnelQ;            // q
 uniform float osgWater_ReflectionScale;     // c
 uniform int osgWater_SearchSteps;
+uniform float osgWater_SearchTolerance;    // metres
 uniform vec2 osgWater_OneStep;              // (dv scale, dv max)
 uniform float osgWater_UnderwaterScale;     // m of eq. 13, 15
 
@@ -79,7 +80,7 @@ void main()
 #ifdef OSGWATER_ONE_STEP
             owBottomHit hit = owOneStepSearch(u1, R1, osgWater_OneStep.x, osgWater_OneStep.y);
 #else
-            owBottomHit hit = owIterativeSearch(u1, R1, osgWater_SearchSteps);
+            owBottomHit hit = owIterativeSearch(u1, R1, osgWater_SearchSteps, osgWater_SearchTolerance);
 #endif
             float d = -1.0;
             vec3 col = osgWater_WaterColor;

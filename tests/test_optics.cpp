@@ -218,3 +218,23 @@ TEST(Optics, CandidatesThatSeeSkyStepBackTowardsU)
     EXPECT_NEAR(f.W.x, 0.0f, 1e-5f);
     EXPECT_NEAR(f.W.z, -10.0f, 1e-4f);
 }
+
+TEST(Optics, ToleranceStopsTheSearchEarlyWithoutLosingAccuracy)
+{
+    // planar bottom: W_2 is already exact, so a 1 cm tolerance saves the later lookups
+    const glm::vec3 up(0.0f, 0.8f, 0.6f);
+    FlatBottom bottom{ up, -5.0f };
+    int lookups = 0;
+    DepthLookup counting = [&](const glm::vec3& P) { ++lookups; return bottom(P); };
+    const glm::vec3 ray = glm::normalize(glm::vec3(0.1f, -0.3f, -1.0f));
+    const glm::vec3 U = (-3.0f / glm::dot(up, ray)) * ray;
+    const glm::vec3 R = refract(ray, up, kAir / kWater);
+    const BottomHit all = iterativeSearch(U, R, 8, counting, 0.0f);
+    const int allLookups = lookups;
+    lookups = 0;
+    const BottomHit early = iterativeSearch(U, R, 8, counting, 0.01f);
+    EXPECT_EQ(allLookups, 9);
+    EXPECT_LE(lookups, 3);
+    EXPECT_LT(early.error, 0.01f);
+    EXPECT_NEAR(glm::length(early.W - all.W), 0.0f, 0.01f);
+}
