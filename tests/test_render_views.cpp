@@ -96,6 +96,13 @@ TEST(RenderViews, TwoViewsEachGetTheirOwnReflection)
         EXPECT_EQ(i == 0 ? green : red, 0) << "view " << i;
     }
     EXPECT_NE(reflTex[0], reflTex[1]);
+
+    // a view that goes away takes its passes with it
+    osg::observer_ptr<osg::Camera> gone = viewer->getView(1)->getCamera();
+    viewer->removeView(viewer->getView(1));
+    ASSERT_FALSE(gone.valid()) << "the removed view's camera should be deleted";
+    viewer->frame(1.0);
+    EXPECT_EQ(water->getNumViews(), 1u);
 }
 
 TEST(RenderViews, PassesCullSubgraphsWhollyOnTheWrongSide)
