@@ -67,13 +67,17 @@ void main()
 
     // reflection, eq. 6
     float c = below ? osgWater_UnderwaterScale : osgWater_ReflectionScale;
+#ifdef OSGWATER_NO_REFLECTION
+    vec3 reflCol = osgWater_WaterColor; // no fetch: the reflection pass did not run
+#else
     vec3 reflCol = sampleProjected(osgWater_ReflectionTex, osgWater_ReflectionMVP, U + c * Rr, osgWater_WaterColor);
+#endif
 
     // refraction, eq. 4-5
     vec3 refrCol = osgWater_WaterColor;
     vec4 debugHit = vec4(0.0);
+#ifndef OSGWATER_NO_REFRACTION // no search when the refraction pass did not run
     if (!tir) {
-        mat4 projView = osgWater_RefractionProj * osgWater_RefractionView;
         if (!below) {
             vec3 u1 = (osgWater_RefractionView * vec4(U, 1.0)).xyz;
             vec3 R1 = mat3(osgWater_RefractionView) * R;
@@ -94,16 +98,17 @@ void main()
             refrCol = osgWater_WaterColor + owAttenuation(osgWater_Attenuation, d) * (col - osgWater_WaterColor);
         } else {
             // thesis §7.5: eye under water, W1 = U + m R1, attenuation along |U - C1|
-            vec3 col = sampleProjected(osgWater_RefractionTex, projView, U + osgWater_UnderwaterScale * R, osgWater_WaterColor);
+            vec3 col = sampleProjected(osgWater_RefractionTex, osgWater_RefractionProj * osgWater_RefractionView,
+                                       U + osgWater_UnderwaterScale * R, osgWater_WaterColor);
             float a = owAttenuation(osgWater_Attenuation, length(osgWater_EyeLocal - U));
             refrCol = osgWater_WaterColor + a * (col - osgWater_WaterColor);
         }
     }
+#endif
 
     float F = tir ? 1.0 : fresnel(cosE, n1, n2);
 #ifdef OSGWATER_NO_REFLECTION
     F = tir ? 1.0 : 0.0;
-    reflCol = osgWater_WaterColor;
 #endif
 #ifdef OSGWATER_NO_REFRACTION
     F = 1.0;
