@@ -1,4 +1,5 @@
 #include "GLHarness.h"
+#include "../apps/common/FrameTimer.h"
 #include <osg/Material>
 #include <osg/Texture2D>
 #include <osg/GL>
@@ -12,28 +13,13 @@ namespace testing_gl {
 
 osg::ref_ptr<osg::GraphicsContext> createPbuffer(int width, int height, std::string& why)
 {
-    osg::ref_ptr<osg::GraphicsContext::Traits> traits = new osg::GraphicsContext::Traits;
-    traits->x = 0;
-    traits->y = 0;
-    traits->width = width;
-    traits->height = height;
-    traits->red = traits->green = traits->blue = traits->alpha = 8;
-    traits->depth = 24;
-    traits->windowDecoration = false;
-    traits->pbuffer = true;
-    traits->doubleBuffer = false;
-    traits->sharedContext = 0;
-    traits->readDISPLAY();
-    traits->setUndefinedScreenDetailsToDefaultScreen();
+    // the same pbuffer the demo uses headless; the tests only add why it failed
     if (!std::getenv("DISPLAY")) {
         why = "DISPLAY is not set";
         return nullptr;
     }
-    osg::ref_ptr<osg::GraphicsContext> gc = osg::GraphicsContext::createGraphicsContext(traits.get());
-    if (!gc.valid() || !gc->realize()) {
-        why = "pbuffer creation failed on DISPLAY=" + std::string(std::getenv("DISPLAY"));
-        return nullptr;
-    }
+    osg::ref_ptr<osg::GraphicsContext> gc = osgWaterApps::createPbuffer(width, height);
+    if (!gc.valid()) why = "pbuffer creation failed on DISPLAY=" + std::string(std::getenv("DISPLAY"));
     return gc;
 }
 
