@@ -49,6 +49,7 @@ PassCamera::PassCamera(osg::Group* scene, osg::StateSet* sceneState, int texture
     ss->addUniform(_clipPlaneUniform.get());
     ss->addUniform(_sunUniform.get());
     ss->setMode(GL_CLIP_PLANE0, osg::StateAttribute::ON); // == GL_CLIP_DISTANCE0
+    addCausticsUniforms(ss);
     ss->setDataVariance(osg::Object::DYNAMIC);
 }
 
@@ -80,4 +81,27 @@ void PassCamera::setMatrices(const osg::Matrixd& view, const osg::Matrixd& proje
     osg::Vec3f sunEye = osg::Matrixd::transform3x3(sunLocal, view);
     sunEye.normalize();
     _sunUniform->set(sunEye);
+}
+
+void osgWater::addCausticsUniforms(osg::StateSet* ss)
+{
+    ss->addUniform(new osg::Uniform("osgWater_Caustics", osg::Vec2f(0.0f, 0.0f)));
+    ss->addUniform(new osg::Uniform("osgWater_EyeToSun", osg::Matrixf()));
+    ss->addUniform(new osg::Uniform("osgWater_WaterPlane", osg::Vec4f(0.0f, 0.0f, 0.0f, 1.0f)));
+    ss->addUniform(new osg::Uniform("osgWater_SunDepthBias", osg::Vec2f(0.0f, 0.0f)));
+}
+
+void osgWater::applyCausticsLighting(osg::StateSet* ss, const CausticsLighting* c, const osg::Matrixd& view,
+                                     double level)
+{
+    ss->getUniform("osgWater_WaterPlane")->set(osg::Vec4f(planeToEye(osg::Vec4d(0.0, 0.0, 1.0, -level), view)));
+    if (!c) {
+        ss->getUniform("osgWater_Caustics")->set(osg::Vec2f(0.0f, 0.0f));
+        return;
+    }
+    ss->getUniform("osgWater_Caustics")->set(osg::Vec2f(1.0f, c->intensity));
+    ss->getUniform("osgWater_EyeToSun")->set(osg::Matrixf(osg::Matrixd::inverse(view) * c->localToSun));
+    ss->getUniform("osgWater_SunDepthBias")->set(c->depthBias);
+    ss->setTextureAttribute(4, c->caustics.get());
+    ss->setTextureAttribute(5, c->depth.get());
 }

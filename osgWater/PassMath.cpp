@@ -86,4 +86,34 @@ osg::Vec3d projectToTexture(const osg::Vec3d& local, const osg::Matrixd& view, c
     return osg::Vec3d(c.x() / w * 0.5 + 0.5, c.y() / w * 0.5 + 0.5, c.z() / w * 0.5 + 0.5);
 }
 
+osg::Matrixd sunView(const osg::Vec3d& towardsSun, const osg::BoundingBox& box)
+{
+    osg::Vec3d L = towardsSun;
+    if (!(L.length2() > 1e-24)) L.set(0.0, 0.0, 1.0);
+    L.normalize();
+    osg::Vec3d up(0.0, 1.0, 0.0);
+    if (std::fabs(L * up) > 0.999) up.set(1.0, 0.0, 0.0);
+    up = up - L * (L * up);
+    up.normalize();
+    const osg::Vec3d c = box.valid() ? osg::Vec3d(box.center()) : osg::Vec3d();
+    const double r = box.valid() ? box.radius() : 1.0;
+    return osg::Matrixd::lookAt(c + L * (2.0 * r + 1.0), c, up);
+}
+
+osg::Matrixd sunProjection(const osg::Matrixd& view, const osg::BoundingBox& box)
+{
+    if (!box.valid()) return osg::Matrixd::ortho(-1.0, 1.0, -1.0, 1.0, 0.1, 10.0);
+    osg::BoundingBoxd e;
+    for (unsigned int i = 0; i < 8; ++i) e.expandBy(osg::Vec3d(box.corner(i)) * view);
+    // a degenerate extent (flat box seen edge-on) still needs a non-singular matrix
+    const double pad = 1e-3 * std::max(1.0, e.radius());
+    return osg::Matrixd::ortho(e.xMin() - pad, e.xMax() + pad, e.yMin() - pad, e.yMax() + pad,
+                               -e.zMax() - pad, -e.zMin() + pad);
+}
+
+osg::Matrixd clipToTexture()
+{
+    return osg::Matrixd::translate(1.0, 1.0, 1.0) * osg::Matrixd::scale(0.5, 0.5, 0.5);
+}
+
 }

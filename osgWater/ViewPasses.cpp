@@ -23,6 +23,7 @@ ViewPasses::ViewPasses(osg::Group* scene, osg::StateSet* sceneState, int reflect
     _stateSet->addUniform(new osg::Uniform("osgWater_EyeBelow", 0.0f));
     _stateSet->addUniform(new osg::Uniform("osgWater_SunEye", osg::Vec3f(0.0f, 0.0f, 1.0f)));
     _stateSet->addUniform(new osg::Uniform("osgWater_ClipPlane", osg::Vec4f(0.0f, 0.0f, 0.0f, 1.0f)));
+    addCausticsUniforms(_stateSet.get());
 }
 
 bool ViewPasses::matchesSizes(int reflectionSize, int refractionSize) const
@@ -46,7 +47,10 @@ void ViewPasses::setTimingEnabled(bool on)
 void ViewPasses::update(const PassContext& ctx, bool reflection, bool refraction)
 {
     if (reflection) _reflection->update(ctx);
-    if (refraction) _refraction->update(ctx);
+    if (refraction) {
+        _refraction->update(ctx);
+        applyCausticsLighting(_refraction->getOrCreateStateSet(), ctx.caustics, _refraction->getViewMatrix(), ctx.level);
+    }
     osg::StateSet* ss = _stateSet.get();
     ss->getUniform("osgWater_ReflectionMVP")->set(osg::Matrixf(_reflection->getViewProjection()));
     const osg::Matrixd& rv = _refraction->getViewMatrix();
@@ -57,6 +61,7 @@ void ViewPasses::update(const PassContext& ctx, bool reflection, bool refraction
     ss->getUniform("osgWater_RefractionInvProj")->set(osg::Matrixf(osg::Matrixd::inverse(rp)));
     ss->getUniform("osgWater_EyeLocal")->set(osg::Vec3f(eyePosition(ctx.view)));
     ss->getUniform("osgWater_EyeBelow")->set(ctx.eyeBelow ? 1.0f : 0.0f);
+    applyCausticsLighting(ss, ctx.caustics, ctx.view, ctx.level);
     if (ctx.settings) {
         osg::Vec3f sun = osg::Matrixd::transform3x3(ctx.settings->getSunDirection(), ctx.view);
         sun.normalize();

@@ -1,6 +1,8 @@
 #include <osgWater/WaterNode>
 #include <osgWater/PassMath>
 #include <osgUtil/CullVisitor>
+#include <osg/ComputeBoundsVisitor>
+#include <OpenThreads/ScopedLock>
 
 using namespace osgWater;
 
@@ -66,6 +68,7 @@ osg::BoundingSphere WaterNode::computeBound() const
 void WaterNode::releaseGLObjects(osg::State* state) const
 {
     osg::Group::releaseGLObjects(state);
+    if (_caustics.valid()) _caustics->releaseGLObjects(state);
     if (_surface.valid()) _surface->releaseGLObjects(state);
     _states.getSceneStateSet()->releaseGLObjects(state);
     _states.getWaterStateSet()->releaseGLObjects(state);
@@ -100,7 +103,9 @@ void WaterNode::cull(osgUtil::CullVisitor& cv)
     const bool wantRefraction = s.getRefractionEnabled();
     if (!waterVisible) {
         cv.pushStateSet(sceneState);
+        cv.pushStateSet(_states.getNoCausticsStateSet());
         osg::Group::traverse(cv);
+        cv.popStateSet();
         cv.popStateSet();
         return;
     }
@@ -120,6 +125,8 @@ void WaterNode::cull(osgUtil::CullVisitor& cv)
     ctx.fovExtension = s.fovExtensionAt(eyeHeight);
     ctx.clearColor = camera->getClearColor();
     ctx.settings = &s;
+    // 3b. caustics: the sun's passes, once per frame for all views (before this view's passes)
+    ctx.caustics = cullCaustics(cv);
     passes->setTimingEnabled(_passTiming);
     passes->update(ctx, wantReflection, wantRefraction);
 
@@ -136,4 +143,60 @@ void WaterNode::cull(osgUtil::CullVisitor& cv)
     cv.popStateSet();
     cv.popStateSet();
     cv.popStateSet();
+}
+
+const osg::BoundingBox& WaterNode::sceneBox()
+{
+    const osg::BoundingSphere bs = osg::Group::computeBound();
+    if (bs.center() != _sceneBoxKey.center() || bs.radius() != _sceneBoxKey.radius()) {
+        _sceneBoxKey = bs;
+        osg::ComputeBoundsVisitor cbv;
+        for (unsigned int i = 0; i < getNumChildren(); ++i) getChild(i)->accept(cbv);
+        _sceneBox = cbv.getBoundingBox();
+    }
+    return _sceneBox;
+}
+
+const CausticsLighting* WaterNode::cullCaustics(osgUtil::CullVisitor& cv)
+{
+    const WaterSettings& s = *_settings;
+    if (!s.getCausticsEnabled()) return nullptr;
+    OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_causticsMutex);
+    CausticsCamera::Frame f;
+    f.towardsSun = s.getSunDirection();
+    f.water = _surface->getBoundingBox();
+    const float a = _surface->getMaxAmplitude();
+    f.water.zMin() -= a;
+    f.water.zMax() += a;
+    f.scene = sceneBox();
+    f.level = _surface->getLevel();
+    f.clearance = a + s.getClipOffset();
+    f.surface = _surface.get();
+    f.settings = &s;
+    if (!CausticsCamera::needed(f)) return nullptr;
+
+    const unsigned int context = cv.getState() ? cv.getState()->getContextID() : 0u;
+    const unsigned int frame = cv.getFrameStamp() ? cv.getFrameStamp()->getFrameNumber() : 0u;
+    auto done = _causticsFrame.find(context);
+    if (_caustics.valid() && done != _causticsFrame.end() && done->second == frame)
+        return &_caustics->getLighting(); // another view already rendered them this frame
+
+    const CausticsSupport support = CausticsSupport::detect(context);
+    if (!_caustics.valid() || !_caustics->matches(s.getCausticsResolution(), s.getPhotonGridSize(), support.floatTargets))
+        _caustics = new CausticsCamera(this, _states.getSceneStateSet(), _states.getWaterStateSet(),
+                                       s.getCausticsResolution(), s.getPhotonGridSize(), support.floatTargets);
+    f.gather = support.resolve(s.getCausticsGather());
+    if (f.gather != _activeGather) {
+        if (s.getCausticsGather() != WaterSettings::GATHER_AUTO && f.gather != s.getCausticsGather())
+            OSG_WARN << "osgWater: caustics gather " << CausticsCamera::gatherName(s.getCausticsGather())
+                     << " is not supported by this context, using " << CausticsCamera::gatherName(f.gather) << std::endl;
+        if (!support.floatTargets)
+            OSG_WARN << "osgWater: no float render targets, caustics fall back to the CPU gather" << std::endl;
+        OSG_INFO << "osgWater: caustics gather: " << CausticsCamera::gatherName(f.gather) << std::endl;
+        _activeGather = f.gather;
+    }
+    _caustics->update(f);
+    _caustics->cullPasses(cv);
+    _causticsFrame[context] = frame;
+    return &_caustics->getLighting();
 }

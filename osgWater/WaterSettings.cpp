@@ -56,6 +56,8 @@ WaterSettings::WaterSettings()
       _clipOffset(0.05f),
       _reflectionTextureSize(512), _refractionTextureSize(512),
       _refractionCameraRotation(true), _reflectionEnabled(true), _refractionEnabled(true),
+      _causticsEnabled(true), _causticsFiltering(true), _causticsResolution(256), _photonGridSize(512),
+      _causticsIntensity(1.0f), _causticsGather(GATHER_AUTO),
       _sunDirection(defaultSunDirection()), _sunColor(1.0f, 1.0f, 0.9f), _ambientColor(0.35f, 0.38f, 0.45f),
       _revision(0)
 {
@@ -80,6 +82,9 @@ WaterSettings::WaterSettings(const WaterSettings& o, const osg::CopyOp& copyop)
       _reflectionTextureSize(o._reflectionTextureSize), _refractionTextureSize(o._refractionTextureSize),
       _refractionCameraRotation(o._refractionCameraRotation),
       _reflectionEnabled(o._reflectionEnabled), _refractionEnabled(o._refractionEnabled),
+      _causticsEnabled(o._causticsEnabled), _causticsFiltering(o._causticsFiltering),
+      _causticsResolution(o._causticsResolution), _photonGridSize(o._photonGridSize),
+      _causticsIntensity(o._causticsIntensity), _causticsGather(o._causticsGather),
       _sunDirection(o._sunDirection), _sunColor(o._sunColor), _ambientColor(o._ambientColor),
       _revision(0)
 {
@@ -99,6 +104,9 @@ void WaterSettings::setUnderwaterLookupScale(float m) { _underwaterLookupScale =
 void WaterSettings::setClipOffset(float d) { _clipOffset = clampOr("clipOffset", d, 0.0f, 100.0f, 0.05f); touch(); }
 void WaterSettings::setReflectionTextureSize(int s) { _reflectionTextureSize = clampInt("reflectionTextureSize", s, 16, 4096); touch(); }
 void WaterSettings::setRefractionTextureSize(int s) { _refractionTextureSize = clampInt("refractionTextureSize", s, 16, 4096); touch(); }
+void WaterSettings::setCausticsResolution(int s) { _causticsResolution = clampInt("causticsResolution", s, 16, 4096); touch(); }
+void WaterSettings::setPhotonGridSize(int s) { _photonGridSize = clampInt("photonGridSize", s, 16, 4096); touch(); }
+void WaterSettings::setCausticsIntensity(float v) { _causticsIntensity = clampOr("causticsIntensity", v, 0.0f, 100.0f, 1.0f); touch(); }
 void WaterSettings::setSunColor(const osg::Vec3& c) { _sunColor = clampColor("sunColor", c, osg::Vec3(1.0f, 1.0f, 0.9f), 100.0f); touch(); }
 void WaterSettings::setAmbientColor(const osg::Vec3& c) { _ambientColor = clampColor("ambientColor", c, osg::Vec3(0.35f, 0.38f, 0.45f), 100.0f); touch(); }
 

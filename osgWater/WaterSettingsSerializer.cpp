@@ -43,6 +43,17 @@ REGISTER_OBJECT_WRAPPER(osgWater_WaterSettings, new osgWater::WaterSettings, osg
     ADD_BOOL_SERIALIZER(RefractionCameraRotation, true);
     ADD_BOOL_SERIALIZER(ReflectionEnabled, true);
     ADD_BOOL_SERIALIZER(RefractionEnabled, true);
+    ADD_BOOL_SERIALIZER(CausticsEnabled, true);
+    ADD_INT_SERIALIZER(CausticsResolution, 256);
+    ADD_INT_SERIALIZER(PhotonGridSize, 512);
+    ADD_FLOAT_SERIALIZER(CausticsIntensity, 1.0f);
+    ADD_BOOL_SERIALIZER(CausticsFiltering, true);
+    BEGIN_ENUM_SERIALIZER(CausticsGather, GATHER_AUTO);
+        ADD_ENUM_VALUE(GATHER_AUTO);
+        ADD_ENUM_VALUE(GATHER_POINTS_COPY);
+        ADD_ENUM_VALUE(GATHER_POINTS_TEXTURE);
+        ADD_ENUM_VALUE(GATHER_CPU);
+    END_ENUM_SERIALIZER();
     ADD_VEC3F_SERIALIZER(SunDirection, osgWater::WaterSettings::defaultSunDirection());
     ADD_VEC3F_SERIALIZER(SunColor, osg::Vec3f(1.0f, 1.0f, 0.9f));
     ADD_VEC3F_SERIALIZER(AmbientColor, osg::Vec3f(0.35f, 0.38f, 0.45f));

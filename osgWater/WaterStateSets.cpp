@@ -2,6 +2,7 @@
 #include <osgWater/WaterSettings>
 #include <osgWater/WaterSurface>
 #include <osgWater/Shaders>
+#include <osgWater/PassCamera>
 #include <osg/Material>
 #include <osg/Texture2D>
 #include <osg/Image>
@@ -47,6 +48,11 @@ WaterStateSets::WaterStateSets()
     _scene->setAttribute(m.get());
     _scene->addUniform(new osg::Uniform("osgWater_SunColor", osg::Vec3f(1.0f, 1.0f, 1.0f)));
     _scene->addUniform(new osg::Uniform("osgWater_Ambient", osg::Vec3f(0.3f, 0.3f, 0.3f)));
+    // caustics (units 4, 5): the switch and matrices come from each pass's own StateSet
+    _scene->addUniform(new osg::Uniform("osgWater_CausticsTex", 4));
+    _scene->addUniform(new osg::Uniform("osgWater_SunDepth", 5));
+    _noCaustics = new osg::StateSet;
+    addCausticsUniforms(_noCaustics.get());
 
     _water = new osg::StateSet;
     _water->setName("osgWater.water");

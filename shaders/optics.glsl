@@ -38,6 +38,20 @@ float owFresnelExact(float cosI, float n1, float n2)
     return 0.5 * (rs * rs + rp * rp);
 }
 
+// The Fresnel model chosen by OSGWATER_FRESNEL (0 Schlick eq. 7-8, 1 power, 2 exact);
+// the includer lists OSGWATER_FRESNEL in its import_defines.
+float owFresnel(float cosE, float n1, float n2, float q)
+{
+#if defined(OSGWATER_FRESNEL) && OSGWATER_FRESNEL == 2
+    return owFresnelExact(cosE, n1, n2);
+#elif defined(OSGWATER_FRESNEL) && OSGWATER_FRESNEL == 1
+    return owFresnelPower(cosE, q);
+#else
+    float r = (n1 - n2) / (n1 + n2);
+    return owFresnelSchlick(cosE, r * r, q);
+#endif
+}
+
 // eq. 4; d < 0 means "no bottom along the ray"
 float owAttenuation(float k, float d)
 {
@@ -70,7 +84,9 @@ bool owRefractionTexCoord(vec3 P, out vec2 tc)
     return true;
 }
 
-// A: the first surface on the camera ray through P (A = P Z / P.z); false for sky (depth 1.0)
+// A: the first surface on the camera ray through P; false for sky (depth 1.0). Camera rays meet
+// at the eye (A = P Z / P.z), or are parallel to -Z when the includer defines OSGWATER_ORTHO_DEPTH
+// (the sun's orthographic camera of the caustics pass: A = (P.xy, Z)).
 bool owBottomAlongRay(vec3 P, out vec3 A)
 {
     A = P;
@@ -80,7 +96,11 @@ bool owBottomAlongRay(vec3 P, out vec3 A)
     if (d >= 0.999999) return false;
     vec4 e = osgWater_RefractionInvProj * vec4(vec3(tc, d) * 2.0 - 1.0, 1.0);
     float Z = e.z / e.w;
+#ifdef OSGWATER_ORTHO_DEPTH
+    A = vec3(P.xy, Z);
+#else
     A = P * (Z / P.z);
+#endif
     return true;
 }
 

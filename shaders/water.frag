@@ -34,18 +34,6 @@ vec3 sampleProjected(sampler2D tex, mat4 mvp, vec3 P, vec3 fallback)
     return texture(tex, c.xy / c.w * 0.5 + 0.5).rgb;
 }
 
-float fresnel(float cosE, float n1, float n2)
-{
-#if defined(OSGWATER_FRESNEL) && OSGWATER_FRESNEL == 2
-    return owFresnelExact(cosE, n1, n2);
-#elif defined(OSGWATER_FRESNEL) && OSGWATER_FRESNEL == 1
-    return owFresnelPower(cosE, osgWater_FresnelQ);
-#else
-    float r = (n1 - n2) / (n1 + n2);
-    return owFresnelSchlick(cosE, r * r, osgWater_FresnelQ);
-#endif
-}
-
 void main()
 {
     vec3 U = vLocal;
@@ -106,7 +94,7 @@ void main()
     }
 #endif
 
-    float F = tir ? 1.0 : fresnel(cosE, n1, n2);
+    float F = tir ? 1.0 : owFresnel(cosE, n1, n2, osgWater_FresnelQ);
 #ifdef OSGWATER_NO_REFLECTION
     F = tir ? 1.0 : 0.0;
 #endif

@@ -145,3 +145,41 @@ TEST(PassMath, ProjectToTextureCentre)
     EXPECT_GT(t.z(), 0.0);
     EXPECT_LT(t.z(), 1.0);
 }
+
+TEST(PassMath, SunCameraEnclosesTheBoxAndLooksAlongTheSun)
+{
+    const osg::BoundingBox box(-70.0f, -50.0f, -9.0f, 70.0f, 50.0f, 0.2f);
+    for (const osg::Vec3d& sun : { osg::Vec3d(0, 0, 1), osg::Vec3d(0.3, 0.4, 0.866), osg::Vec3d(0, 1, 1e-4),
+                                   osg::Vec3d(0, 1, 0) }) {
+        osg::Vec3d L = sun;
+        L.normalize();
+        const osg::Matrixd view = sunView(L, box);
+        const osg::Matrixd proj = sunProjection(view, box);
+        // the camera looks along -L: eye-space -Z is the direction of the sun's rays
+        const osg::Vec3d fwd = osg::Matrixd::transform3x3(view, osg::Vec3d(0, 0, -1));
+        EXPECT_NEAR((fwd + L).length(), 0.0, 1e-9);
+        for (unsigned int i = 0; i < 8; ++i) {
+            const osg::Vec3d t = projectToTexture(osg::Vec3d(box.corner(i)), view, proj);
+            for (int k = 0; k < 3; ++k) {
+                EXPECT_GE(t[k], 0.0);
+                EXPECT_LE(t[k], 1.0);
+            }
+        }
+        // points along one sun ray share a texel: depth alone changes
+        const osg::Vec3d a = projectToTexture(osg::Vec3d(3, -4, -2), view, proj);
+        const osg::Vec3d b = projectToTexture(osg::Vec3d(3, -4, -2) + L * 5.0, view, proj);
+        EXPECT_NEAR(a.x(), b.x(), 1e-9);
+        EXPECT_NEAR(a.y(), b.y(), 1e-9);
+        EXPECT_LT(b.z(), a.z()); // nearer the sun: smaller depth
+    }
+    // an overhead sun maps x and y linearly onto the texture axes
+    const osg::Matrixd view = sunView(osg::Vec3d(0, 0, 1), box);
+    const osg::Matrixd proj = sunProjection(view, box);
+    const osg::Vec3d lo = projectToTexture(osg::Vec3d(-70, -50, 0), view, proj);
+    const osg::Vec3d hi = projectToTexture(osg::Vec3d(70, 50, 0), view, proj);
+    // (the window is padded by 1e-3 of the box radius)
+    EXPECT_NEAR(lo.x(), 0.0, 2e-3);
+    EXPECT_NEAR(lo.y(), 0.0, 2e-3);
+    EXPECT_NEAR(hi.x(), 1.0, 2e-3);
+    EXPECT_NEAR(hi.y(), 1.0, 2e-3);
+}

@@ -46,6 +46,8 @@ osg::ref_ptr<WaterNode> pond()
     s->setReflectionTextureSize(256);
     s->setRefractionCameraRotation(false);
     s->setReflectionEnabled(false);
+    s->setPhotonGridSize(128);
+    s->setCausticsGather(WaterSettings::GATHER_CPU);
     WaterSurface* f = w->getSurface();
     f->setLevel(1.5);
     f->setSize(60.0f);
@@ -92,6 +94,9 @@ TEST(Serialization, ExpectedTextReadsBackIntoTheSameNode)
     EXPECT_FALSE(s->getRefractionCameraRotation());
     EXPECT_FALSE(s->getReflectionEnabled());
     EXPECT_TRUE(s->getRefractionEnabled());
+    EXPECT_EQ(s->getPhotonGridSize(), 128);
+    EXPECT_EQ(s->getCausticsGather(), WaterSettings::GATHER_CPU);
+    EXPECT_EQ(s->getCausticsResolution(), 256); // absent: default
     const WaterSurface* f = w->getSurface();
     EXPECT_DOUBLE_EQ(f->getLevel(), 1.5);
     EXPECT_FLOAT_EQ(f->getSize(), 60.0f);

@@ -22,6 +22,8 @@ TEST(Settings, DefaultsAreThesisTable1)
     EXPECT_EQ(s->getSearchSteps(), 3);
     EXPECT_EQ(s->getRefractionLookup(), WaterSettings::ITERATIVE);
     EXPECT_NEAR(s->getAirIOR() / s->getWaterIOR(), 0.75f, 1e-3f); // the shader's 0.75
+    EXPECT_EQ(s->getCausticsResolution(), 256);                     // thesis §9.2
+    EXPECT_TRUE(s->getCausticsFiltering());                         // "with enabled filtering"
 }
 
 TEST(Settings, FovExtensionFallsWithEyeHeight)
@@ -69,6 +71,18 @@ TEST(Settings, AbsurdValuesAreClampedWithAWarning)
     EXPECT_FLOAT_EQ(s->getFovExtensionNear(), 1.5f);
     EXPECT_FLOAT_EQ(s->getFovExtensionFar(), 1.0f);
     EXPECT_GT(s->getFovExtensionFalloff(), 0.0f);
+    {
+        ScopedWarnCapture w;
+        s->setCausticsIntensity(NAN);
+        EXPECT_NE(w.str().find("causticsIntensity"), std::string::npos);
+    }
+    EXPECT_FLOAT_EQ(s->getCausticsIntensity(), 1.0f);
+    s->setCausticsIntensity(-3.0f);
+    EXPECT_FLOAT_EQ(s->getCausticsIntensity(), 0.0f);
+    s->setCausticsResolution(0);
+    EXPECT_EQ(s->getCausticsResolution(), 16);
+    s->setPhotonGridSize(1 << 20);
+    EXPECT_EQ(s->getPhotonGridSize(), 4096);
     s->setSunDirection(osg::Vec3(0.0f, 0.0f, 0.0f));
     EXPECT_NEAR(s->getSunDirection().length(), 1.0f, 1e-6f);
 }

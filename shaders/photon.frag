@@ -1,0 +1,42 @@
+#version 130
+#pragma import_defines(OSGWATER_GRID, OSGWATER_FRESNEL)
+// Caustics pass 2: one photon per fragment. The sun ray through this texel is refracted at the
+// surface, its hit on the bed is found by the same depth-texture search as the refraction
+// (here in the sun's depth map, orthographic rays), and the photon is written as
+// (u, v, energy, 1): u, v its hit in the sun's texture space, energy = (1 - F) exp(-k d) the
+// Fresnel-transmitted, attenuated share of the sun irradiance on this texel (thesis §9.2).
+#define OSGWATER_ORTHO_DEPTH 1
+#pragma include "waves.glsl"
+#pragma include "optics.glsl"
+
+uniform vec2 osgWater_IOR;              // (air, water)
+uniform float osgWater_Attenuation;     // k
+uniform float osgWater_FresnelQ;
+uniform int osgWater_SearchSteps;
+uniform float osgWater_SearchTolerance;
+
+in vec3 vLocal;
+in vec3 vMeshNormal;
+in vec3 vEye;
+
+void main()
+{
+#ifdef OSGWATER_GRID
+    vec3 Nl = waterNormal(vLocal.xy);
+#else
+    vec3 Nl = owSafeNormalize(vMeshNormal, vec3(0.0, 0.0, 1.0));
+#endif
+    const vec3 L = vec3(0.0, 0.0, 1.0);  // towards the sun, in the sun camera's eye space
+    vec3 N = owFaceNormal(owSafeNormalize(gl_NormalMatrix * Nl, L), L, 1e-3);
+    float cosL = clamp(dot(N, L), 0.0, 1.0);
+    vec3 T = refract(-L, N, osgWater_IOR.x / osgWater_IOR.y);
+    vec4 photon = vec4(0.0);              // alpha 0: no photon
+    owBottomHit hit = owIterativeSearch(vEye, T, osgWater_SearchSteps, osgWater_SearchTolerance);
+    vec2 tc;
+    if (dot(T, T) > 0.5 && hit.valid && owRefractionTexCoord(hit.W, tc)) {
+        float F = owFresnel(cosL, osgWater_IOR.x, osgWater_IOR.y, osgWater_FresnelQ);
+        float d = length(hit.A - vEye);
+        photon = vec4(tc, (1.0 - F) * exp(-osgWater_Attenuation * d), 1.0);
+    }
+    gl_FragColor = photon;
+}

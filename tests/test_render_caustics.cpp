@@ -1,0 +1,262 @@
+// Caustics (thesis ch. 8): the caustics texture holds the sun power per area seen from the sun,
+// in units of the sun's irradiance. Flat water must give the transmitted, attenuated irradiance
+// everywhere; a lens-shaped bump must focus where geometric optics says and conserve energy; the
+// three gather paths must agree; no target may hold NaN/Inf, whatever the sun's elevation.
+#include "GLHarness.h"
+#include <osgWater/WaterNode>
+#include <osgWater/Optics>
+#include <osg/Geometry>
+#include <osg/io_utils>
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+
+using namespace testing_gl;
+using namespace osgWater;
+
+namespace {
+
+const float kK = 0.5f; // attenuation per metre
+
+// A square water mesh of side `size` with a Gaussian bump h0 exp(-r^2 / 2 s^2) at (x0, y0):
+// exact positions and normals on a fine grid.
+osg::Geometry* bumpMesh(float size, int n, float x0, float y0, float h0, float s)
+{
+    osg::ref_ptr<osg::Vec3Array> v = new osg::Vec3Array, nn = new osg::Vec3Array;
+    for (int j = 0; j <= n; ++j)
+        for (int i = 0; i <= n; ++i) {
+            const float x = -size / 2 + size * i / n, y = -size / 2 + size * j / n;
+            const float dx = x - x0, dy = y - y0, h = h0 * std::exp(-(dx * dx + dy * dy) / (2 * s * s));
+            v->push_back(osg::Vec3(x, y, h));
+            osg::Vec3 N(h * dx / (s * s), h * dy / (s * s), 1.0f); // (-dh/dx, -dh/dy, 1)
+            N.normalize();
+            nn->push_back(N);
+        }
+    osg::ref_ptr<osg::DrawElementsUInt> tris = new osg::DrawElementsUInt(GL_TRIANGLES);
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+            const unsigned a = j * (n + 1) + i, b = a + 1, c = a + n + 1, d = c + 1;
+            for (unsigned k : { a, b, d, a, d, c }) tris->push_back(k);
+        }
+    osg::Geometry* g = new osg::Geometry;
+    g->setVertexArray(v.get());
+    g->setNormalArray(nn.get(), osg::Array::BIND_PER_VERTEX);
+    g->addPrimitiveSet(tris.get());
+    return g;
+}
+
+struct CausticsScene {
+    Harness h{ 64, 64 };
+    osg::ref_ptr<WaterNode> water = new WaterNode;
+    float bedZ;
+
+    CausticsScene(float size, int res, int grid, osg::Vec3 sun, float bed, osg::Geometry* mesh = nullptr)
+        : bedZ(bed)
+    {
+        if (!h.ok()) return;
+        water->getSurface()->setWaves({});
+        water->getSurface()->setSize(size);
+        if (mesh) water->getSurface()->setMesh(mesh);
+        WaterSettings* s = water->getSettings();
+        s->setCausticsResolution(res);
+        s->setPhotonGridSize(grid);
+        s->setSunDirection(sun);
+        s->setAttenuation(kK);
+        s->setReflectionEnabled(false); // only the caustics passes matter here
+        s->setRefractionEnabled(false);
+        const float b = size / 2;
+        water->addChild(emissiveQuad(osg::Vec3(-b, -b, bed), osg::Vec3(b, -b, bed), osg::Vec3(b, b, bed),
+                                     osg::Vec3(-b, b, bed), osg::Vec4(1, 1, 1, 1)));
+        h.setScene(water.get());
+        h.lookAt(osg::Vec3d(0, -1, 30), osg::Vec3d(0, 0, 0));
+    }
+
+    void setGather(WaterSettings::CausticsGather g) { water->getSettings()->setCausticsGather(g); }
+
+    osg::ref_ptr<osg::Image> render()
+    {
+        h.frame(1.0);
+        CausticsCamera* c = water->getCausticsCamera();
+        if (!c) return nullptr;
+        return h.readTexture(c->getCausticsTexture());
+    }
+
+    // the bed point under caustics texel (i, j): where that texel's sun ray meets z = bedZ
+    osg::Vec3d bedPoint(const osg::Image* img, int i, int j) const
+    {
+        const osg::Matrixd inv = osg::Matrixd::inverse(water->getCausticsCamera()->getLighting().localToSun);
+        const double u = (i + 0.5) / img->s(), v = (j + 0.5) / img->t();
+        const osg::Vec3d p0 = osg::Vec3d(u, v, 0.0) * inv, p1 = osg::Vec3d(u, v, 1.0) * inv;
+        return p0 + (p1 - p0) * ((bedZ - p0.z()) / (p1.z() - p0.z()));
+    }
+
+    // sun-projected area of one caustics texel, m^2
+    double texelArea(const osg::Image* img) const
+    {
+        const osg::Vec3d& w = water->getCausticsCamera()->getWindow();
+        return w.x() * w.y() / (double(img->s()) * img->t());
+    }
+};
+
+double value(const osg::Image* img, int i, int j) { return pixel(img, i, j)[0]; }
+
+// Transmitted, attenuated irradiance under flat water of depth H, sun at cosine cosL (Schlick, q 5).
+double flatIrradiance(double cosL, double H)
+{
+    const float f = optics::normalReflectance(1.0f, 1.333f);
+    const double F = optics::fresnelSchlick(float(cosL), f, 5.0f);
+    const double eta = 1.0 / 1.333, cosT = std::sqrt(1.0 - eta * eta * (1.0 - cosL * cosL));
+    return (1.0 - F) * std::exp(-kK * H / cosT);
+}
+
+}
+
+TEST(RenderCaustics, FlatWaterGivesTheTransmittedIrradianceEverywhere)
+{
+    for (const osg::Vec3 sun : { osg::Vec3(0, 0, 1), osg::Vec3(0.3f, 0.2f, 0.93f) }) {
+        CausticsScene sc(20.0f, 64, 128, sun, -2.0f);
+        REQUIRE_GL(sc.h);
+        osg::ref_ptr<osg::Image> img = sc.render();
+        ASSERT_TRUE(img.valid()) << "no caustics pass ran";
+        osg::Vec3 L = sun;
+        L.normalize();
+        const double expected = flatIrradiance(L.z(), 2.0);
+        double lo = 1e30, hi = -1e30, sum = 0;
+        int n = 0;
+        for (int j = 0; j < img->t(); ++j)
+            for (int i = 0; i < img->s(); ++i) {
+                const osg::Vec3d p = sc.bedPoint(img.get(), i, j);
+                if (std::fabs(p.x()) > 7 || std::fabs(p.y()) > 7) continue; // away from the water's edge
+                const double c = value(img.get(), i, j);
+                lo = std::min(lo, c);
+                hi = std::max(hi, c);
+                sum += c;
+                ++n;
+            }
+        ASSERT_GT(n, 500);
+        const double mean = sum / n;
+        EXPECT_NEAR(mean, expected, 0.02 * expected) << "sun " << L;
+        EXPECT_LE(hi - lo, 0.02 * mean) << "sun " << L << ": min " << lo << " max " << hi;
+    }
+}
+
+TEST(RenderCaustics, LensBumpFocusesAtTheAnalyticFocusAndConservesEnergy)
+{
+    // Paraxial focus of a refracting surface of apex curvature radius r = s^2 / h0 (air -> water):
+    // f = n2 r / (n2 - n1) below the apex; an overhead sun focuses on the bump's axis there.
+    const float size = 8.0f, x0 = 1.0f, y0 = -0.5f, h0 = 0.25f, s = 0.5f;
+    const double r = s * s / h0, f = 1.333 * r / 0.333;
+    const float bed = float(h0 - f);
+    CausticsScene sc(size, 128, 256, osg::Vec3(0, 0, 1), bed, bumpMesh(size, 200, x0, y0, h0, s));
+    REQUIRE_GL(sc.h);
+    osg::ref_ptr<osg::Image> img = sc.render();
+    ASSERT_TRUE(img.valid());
+    int bi = 0, bj = 0;
+    double peak = -1, total = 0;
+    for (int j = 0; j < img->t(); ++j)
+        for (int i = 0; i < img->s(); ++i) {
+            const double c = value(img.get(), i, j);
+            total += c;
+            if (c > peak) { peak = c; bi = i; bj = j; }
+        }
+    const osg::Vec3d p = sc.bedPoint(img.get(), bi, bj);
+    const double texel = size / img->s();
+    EXPECT_LE(std::fabs(p.x() - x0), texel) << "peak at " << p;
+    EXPECT_LE(std::fabs(p.y() - y0), texel) << "peak at " << p;
+    EXPECT_GT(peak, 3.0 * flatIrradiance(1.0, -bed)) << "no focus";
+
+    // energy: the photons' analytic transmitted, attenuated power over the water, on a fine grid
+    double expected = 0;
+    const int m = 800;
+    const double cell = size / m;
+    for (int j = 0; j < m; ++j)
+        for (int i = 0; i < m; ++i) {
+            const double x = -size / 2 + (i + 0.5) * cell, y = -size / 2 + (j + 0.5) * cell;
+            const double dx = x - x0, dy = y - y0, hgt = h0 * std::exp(-(dx * dx + dy * dy) / (2 * s * s));
+            const glm::vec3 N = glm::normalize(glm::vec3(hgt * dx / (s * s), hgt * dy / (s * s), 1.0));
+            const glm::vec3 T = optics::refract(glm::vec3(0, 0, -1), N, 1.0f / 1.333f);
+            const float F = optics::fresnelSchlick(N.z, optics::normalReflectance(1.0f, 1.333f), 5.0f);
+            const double d = (hgt - bed) / -T.z;
+            expected += (1.0 - F) * std::exp(-kK * d) * cell * cell;
+        }
+    const double gathered = total * sc.texelArea(img.get());
+    EXPECT_NEAR(gathered, expected, 0.02 * expected);
+}
+
+TEST(RenderCaustics, TheThreeGatherPathsAgree)
+{
+    const float size = 8.0f;
+    CausticsScene sc(size, 64, 128, osg::Vec3(0.2f, 0.1f, 0.97f), -2.0f, bumpMesh(size, 120, 0.5f, 0.5f, 0.25f, 0.5f));
+    REQUIRE_GL(sc.h);
+    osg::ref_ptr<osg::Image> ref;
+    double refMax = 0;
+    for (WaterSettings::CausticsGather g : { WaterSettings::GATHER_CPU, WaterSettings::GATHER_POINTS_COPY,
+                                             WaterSettings::GATHER_POINTS_TEXTURE }) {
+        sc.setGather(g);
+        osg::ref_ptr<osg::Image> img = sc.render();
+        ASSERT_TRUE(img.valid());
+        EXPECT_EQ(sc.water->getActiveCausticsGather(), g);
+        if (!ref.valid()) {
+            ref = img;
+            for (int j = 0; j < img->t(); ++j)
+                for (int i = 0; i < img->s(); ++i) refMax = std::max(refMax, value(img.get(), i, j));
+            ASSERT_GT(refMax, 0.1);
+            continue;
+        }
+        double worst = 0;
+        for (int j = 0; j < img->t(); ++j)
+            for (int i = 0; i < img->s(); ++i)
+                worst = std::max(worst, std::fabs(value(img.get(), i, j) - value(ref.get(), i, j)));
+        EXPECT_LE(worst, 0.02 * refMax) << CausticsCamera::gatherName(g) << " vs CPU";
+    }
+}
+
+TEST(RenderCaustics, WithoutFloatTargetsTheCpuFallbackGivesTheSameCaustics)
+{
+    const float size = 8.0f;
+    osg::ref_ptr<osg::Image> imgs[2];
+    for (int pass = 0; pass < 2; ++pass) {
+        if (pass == 1) setenv("OSGWATER_NO_FLOAT_TARGETS", "1", 1);
+        CausticsScene sc(size, 64, 128, osg::Vec3(0, 0, 1), -2.0f, bumpMesh(size, 120, 0.0f, 0.0f, 0.25f, 0.5f));
+        if (!sc.h.ok()) unsetenv("OSGWATER_NO_FLOAT_TARGETS");
+        REQUIRE_GL(sc.h);
+        imgs[pass] = sc.render();
+        unsetenv("OSGWATER_NO_FLOAT_TARGETS");
+        ASSERT_TRUE(imgs[pass].valid());
+        EXPECT_EQ(sc.water->getCausticsCamera()->hasFloatTargets(), pass == 0);
+        if (pass == 1) {
+            EXPECT_EQ(sc.water->getActiveCausticsGather(), WaterSettings::GATHER_CPU);
+            const float scale = sc.water->getCausticsCamera()->getGather()->getValueScale();
+            double worst = 0, top = 0;
+            for (int j = 0; j < 64; ++j)
+                for (int i = 0; i < 64; ++i) {
+                    top = std::max(top, value(imgs[0].get(), i, j));
+                    worst = std::max(worst, std::fabs(scale * value(imgs[1].get(), i, j) - value(imgs[0].get(), i, j)));
+                }
+            EXPECT_LE(worst, 0.02 * top);
+        }
+    }
+}
+
+TEST(RenderCaustics, NoNaNOrInfAtAnySunElevation)
+{
+    for (double elevation : { 90.0, 45.0, 1.0, 1e-3, 0.0, -10.0 }) {
+        const double e = osg::DegreesToRadians(elevation);
+        const osg::Vec3 sun(0.0f, float(std::cos(e)), float(std::sin(e)));
+        CausticsScene sc(20.0f, 64, 128, sun, -2.0f);
+        REQUIRE_GL(sc.h);
+        sc.water->getSettings()->setRefractionEnabled(true);
+        sc.water->getSurface()->setWaves({ Wave() });
+        sc.h.frame(1e7);
+        CausticsCamera* c = sc.water->getCausticsCamera();
+        if (elevation <= 0.0) {
+            EXPECT_EQ(c, nullptr) << "caustics rendered with the sun at " << elevation << " deg";
+        } else {
+            ASSERT_NE(c, nullptr) << elevation;
+            EXPECT_TRUE(allFinite(sc.h.readTexture(c->getCausticsTexture()).get())) << elevation;
+            EXPECT_TRUE(allFinite(sc.h.readTexture(c->getPhotonTexture()).get())) << elevation;
+            EXPECT_TRUE(allFinite(sc.h.readTexture(c->getDepthTexture()).get())) << elevation;
+        }
+        EXPECT_TRUE(allFinite(sc.h.readColor().get())) << elevation;
+    }
+}
