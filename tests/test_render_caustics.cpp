@@ -6,6 +6,8 @@
 #include <osgWater/WaterNode>
 #include <osgWater/Optics>
 #include <osg/Geometry>
+#include <osg/Material>
+#include <osgWater/PassMath>
 #include <osg/io_utils>
 #include <algorithm>
 #include <cmath>
@@ -97,6 +99,19 @@ struct CausticsScene {
         return w.x() * w.y() / (double(img->s()) * img->t());
     }
 };
+
+// A lit horizontal quad (white diffuse, no ambient or emission): its colour is the sun it receives.
+osg::Geode* litQuad(float x0, float y0, float x1, float y1, float z)
+{
+    osg::Geode* g = emissiveQuad(osg::Vec3(x0, y0, z), osg::Vec3(x1, y0, z), osg::Vec3(x1, y1, z), osg::Vec3(x0, y1, z),
+                                 osg::Vec4(1, 1, 1, 1));
+    osg::ref_ptr<osg::Material> m = new osg::Material;
+    m->setDiffuse(osg::Material::FRONT_AND_BACK, osg::Vec4(1, 1, 1, 1));
+    m->setAmbient(osg::Material::FRONT_AND_BACK, osg::Vec4(0, 0, 0, 1));
+    m->setEmission(osg::Material::FRONT_AND_BACK, osg::Vec4(0, 0, 0, 1));
+    g->getOrCreateStateSet()->setAttribute(m.get());
+    return g;
+}
 
 double value(const osg::Image* img, int i, int j) { return pixel(img, i, j)[0]; }
 
@@ -259,4 +274,36 @@ TEST(RenderCaustics, NoNaNOrInfAtAnySunElevation)
         }
         EXPECT_TRUE(allFinite(sc.h.readColor().get())) << elevation;
     }
+}
+
+TEST(RenderCaustics, TheBedIsLitByTheCausticsAndShadowedByUnderwaterObjects)
+{
+    // sun 30 degrees from the zenith; a lit bed at -2 m and a lit slab at -1 m over x in [2, 4]
+    const osg::Vec3 sun(0.5f, 0.0f, 0.8660254f);
+    CausticsScene sc(20.0f, 64, 128, sun, -2.0f);
+    REQUIRE_GL(sc.h);
+    sc.water->removeChildren(0, sc.water->getNumChildren());
+    sc.water->addChild(litQuad(-10, -10, 10, 10, -2.0f));
+    sc.water->addChild(litQuad(2, -1, 4, 1, -1.0f));
+    WaterSettings* s = sc.water->getSettings();
+    s->setRefractionEnabled(true);
+    s->setAmbientColor(osg::Vec3(0, 0, 0));
+    s->setSunColor(osg::Vec3(1, 1, 1));
+    auto bedColour = [&](const osg::Vec3d& p) {
+        sc.h.frame(1.0);
+        RefractionCamera* rc = sc.water->getViewPasses(sc.h.camera())->getRefractionCamera();
+        osg::ref_ptr<osg::Image> img = sc.h.readTexture(rc->getColorTexture());
+        const osg::Vec3d t = projectToTexture(p, rc->getViewMatrix(), rc->getProjectionMatrix());
+        return double(pixel(img.get(), int(t.x() * img->s()), int(t.y() * img->t()))[0]);
+    };
+    const double ndl = sun.z();
+    // lit bed: n.L times the caustic irradiance C of flat water
+    EXPECT_NEAR(bedColour(osg::Vec3d(-3, 0, -2)), ndl * flatIrradiance(ndl, 2.0), 0.01);
+    // the slab's shadow along the sun (x in [1.42, 3.42] on the bed; the part left of the slab
+    // is what the eye sees)
+    EXPECT_NEAR(bedColour(osg::Vec3d(1.8, 0, -2)), 0.0, 0.01);
+    // caustics off: the full sun, no shadow
+    s->setCausticsEnabled(false);
+    EXPECT_NEAR(bedColour(osg::Vec3d(-3, 0, -2)), ndl, 0.01);
+    EXPECT_NEAR(bedColour(osg::Vec3d(1.8, 0, -2)), ndl, 0.01);
 }
