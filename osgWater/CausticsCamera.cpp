@@ -25,7 +25,6 @@ CausticsSupport CausticsSupport::detect(unsigned int contextID)
 WaterSettings::CausticsGather CausticsSupport::resolve(WaterSettings::CausticsGather wanted) const
 {
     if (!floatTargets) return WaterSettings::GATHER_CPU; // photons need float (u, v) on the GPU paths
-    // measured fastest first (docs: the lake demo's caustics timings)
     const WaterSettings::CausticsGather order[] = { WaterSettings::GATHER_POINTS_TEXTURE,
                                                     WaterSettings::GATHER_POINTS_COPY, WaterSettings::GATHER_CPU };
     auto supported = [this](WaterSettings::CausticsGather g) {
@@ -63,6 +62,10 @@ CausticsCamera::CausticsCamera(osg::Group* scene, osg::StateSet* sceneState, osg
     _gather = new PhotonGather(_photons->getPhotonTexture(), gridSize, resolution, floatTargets);
     _lighting.caustics = _gather->getCausticsTexture();
     _lighting.depth = _depth;
+    _timer = new GpuTimer;
+    // the per-frame passes (the depth map is redrawn only on change); set once: draw callbacks
+    // must not change while drawing
+    _timer->attach(_photons.get(), _gather.get());
 }
 
 bool CausticsCamera::matches(int resolution, int gridSize, bool floatTargets) const
@@ -93,6 +96,11 @@ void CausticsCamera::update(const Frame& f)
     const osg::Matrixd view = sunView(f.towardsSun, box);
     const osg::Matrixd proj = sunProjection(view, box);
     setKeepPlane(osg::Plane(0.0, 0.0, -1.0, f.level + f.clearance)); // the underwater part only
+    if (view != _depthView || proj != _depthProj) {
+        _depthView = view;
+        _depthProj = proj;
+        ++_depthVersion;
+    }
     setMatrices(view, proj, f.towardsSun);
     _photons->setSun(f.surface, view, proj, _depth.get());
     _gather->setMethod(f.gather);
@@ -116,7 +124,49 @@ void CausticsCamera::update(const Frame& f)
 
 void CausticsCamera::cullPasses(osgUtil::CullVisitor& cv)
 {
-    accept(cv);            // pass 1: this camera, the sun's depth map
+    const unsigned int context = cv.getState() ? cv.getState()->getContextID() : 0u;
+    _depthDrawn = _depthDone[context] != _depthVersion;
+    if (_depthDrawn) {
+        accept(cv);        // pass 1: this camera, the sun's depth map
+        _depthDone[context] = _depthVersion;
+    }
     _photons->accept(cv);  // pass 2
     _gather->accept(cv);   // pass 3
+}
+
+WaterSettings::CausticsGather CausticsCamera::autoGather(const CausticsSupport& support)
+{
+    std::vector<WaterSettings::CausticsGather> candidates;
+    if (support.floatTargets) {
+        if (support.vertexTextures) candidates.push_back(WaterSettings::GATHER_POINTS_TEXTURE);
+        if (support.pixelBuffers) candidates.push_back(WaterSettings::GATHER_POINTS_COPY);
+    }
+    candidates.push_back(WaterSettings::GATHER_CPU);
+    if (_autoChoice >= 0 && _autoChoice < int(candidates.size())) return candidates[_autoChoice];
+    if (candidates.size() == 1) return candidates[0];
+
+    // a timer result arrives a frame or two late: the first frames of a trial are not its own
+    const unsigned int skip = 3, frames = 8;
+    _trialMs.resize(candidates.size());
+    if (_trial < candidates.size() && _trialFrame >= skip && getMilliseconds() >= 0.0)
+        _trialMs[_trial].push_back(getMilliseconds());
+    if (++_trialFrame > frames) {
+        _trialFrame = 0;
+        ++_trial;
+    }
+    if (_trial < candidates.size()) return candidates[_trial];
+
+    auto median = [](std::vector<double> v) {
+        if (v.empty()) return 1e30;
+        std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
+        return v[v.size() / 2];
+    };
+    _autoChoice = 0;
+    for (size_t i = 1; i < candidates.size(); ++i)
+        if (median(_trialMs[i]) < median(_trialMs[_autoChoice])) _autoChoice = int(i);
+    OSG_NOTICE << "osgWater: caustics gather (auto): " << gatherName(candidates[_autoChoice]) << ", GPU medians";
+    for (size_t i = 0; i < candidates.size(); ++i)
+        OSG_NOTICE << " " << gatherName(candidates[i]) << " " << median(_trialMs[i]) << " ms";
+    OSG_NOTICE << std::endl;
+    return candidates[_autoChoice];
 }

@@ -37,6 +37,12 @@ void GpuTimer::attach(osg::Camera* camera)
     camera->setFinalDrawCallback(new End(this));
 }
 
+void GpuTimer::attach(osg::Camera* first, osg::Camera* last)
+{
+    first->setInitialDrawCallback(new Begin(this));
+    last->setFinalDrawCallback(new End(this));
+}
+
 void GpuTimer::detach(osg::Camera* camera)
 {
     camera->setInitialDrawCallback(nullptr);

@@ -185,14 +185,15 @@ const CausticsLighting* WaterNode::cullCaustics(osgUtil::CullVisitor& cv)
     if (!_caustics.valid() || !_caustics->matches(s.getCausticsResolution(), s.getPhotonGridSize(), support.floatTargets))
         _caustics = new CausticsCamera(this, _states.getSceneStateSet(), _states.getWaterStateSet(),
                                        s.getCausticsResolution(), s.getPhotonGridSize(), support.floatTargets);
-    f.gather = support.resolve(s.getCausticsGather());
+    f.gather = s.getCausticsGather() == WaterSettings::GATHER_AUTO ? _caustics->autoGather(support)
+                                                                  : support.resolve(s.getCausticsGather());
     if (f.gather != _activeGather) {
         if (s.getCausticsGather() != WaterSettings::GATHER_AUTO && f.gather != s.getCausticsGather())
             OSG_WARN << "osgWater: caustics gather " << CausticsCamera::gatherName(s.getCausticsGather())
                      << " is not supported by this context, using " << CausticsCamera::gatherName(f.gather) << std::endl;
         if (!support.floatTargets)
             OSG_WARN << "osgWater: no float render targets, caustics fall back to the CPU gather" << std::endl;
-        OSG_INFO << "osgWater: caustics gather: " << CausticsCamera::gatherName(f.gather) << std::endl;
+        OSG_DEBUG << "osgWater: caustics gather: " << CausticsCamera::gatherName(f.gather) << std::endl;
         _activeGather = f.gather;
     }
     _caustics->update(f);

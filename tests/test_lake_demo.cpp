@@ -126,10 +126,34 @@ TEST(LakeDemo, BedVisibleInShallowWaterNotInDeep)
     shallowOn /= float(nShallow);
     shallowOff /= float(nShallow);
     deepOn /= float(nDeep);
-    // sand through shallow water (red channel: water colour has none), the water colour over deep water
-    EXPECT_GT(shallowOn.x(), 0.25f) << "shallow " << shallowOn;
+    // sand through shallow water (red channel: water colour has none), the water colour over deep water;
+    // the sun on the sand is the caustic irradiance, (1 - F) exp(-k d) ~ 0.7 of the sun at these depths
+    EXPECT_GT(shallowOn.x(), 0.15f) << "shallow " << shallowOn;
     EXPECT_LT(deepOn.x(), 0.08f) << "deep " << deepOn;
     EXPECT_GT(luminance(shallowOn), luminance(deepOn) + 0.1f);
     // and it is the refraction that shows it
     EXPECT_LT(shallowOff.x(), shallowOn.x() - 0.1f) << "without refraction " << shallowOff;
+}
+
+TEST(LakeDemo, CausticsChangeTheShallowBedAndNothingAboveTheWater)
+{
+    RUN_DEMO_PAIR("--no-reflection", "--no-reflection --no-caustics", on, off);
+    double changedBed = 0, changedDry = 0;
+    int nBed = 0, nDry = 0;
+    for (int y = 0; y < H; y += 3)
+        for (int x = 0; x < W; x += 3) {
+            const osg::Vec3 a = on.at(osg::Vec2d(x, y)), b = off.at(osg::Vec2d(x, y));
+            const double d = std::max(std::fabs(a.x() - b.x()), std::max(std::fabs(a.y() - b.y()), std::fabs(a.z() - b.z())));
+            osg::Vec3d hit;
+            if (!waterPoint(x, y, hit)) {
+                if (y > H / 2 + 40) { changedDry = std::max(changedDry, d); ++nDry; } // sky, trees, dry shore
+                continue;
+            }
+            const float depth = -lake::height(float(hit.x()), float(hit.y()));
+            if (depth > 0.2f && depth < 2.0f) { changedBed += d; ++nBed; }
+        }
+    ASSERT_GT(nBed, 50);
+    ASSERT_GT(nDry, 50);
+    EXPECT_LE(changedDry, 2.0 / 255.0) << "caustics changed something above the water";
+    EXPECT_GT(changedBed / nBed, 0.02) << "caustics did not change the shallow bed";
 }

@@ -282,6 +282,21 @@ bool writeOsgt(const std::string& path)
     osg::ref_ptr<osgWater::WaterNode> water = new osgWater::WaterNode;
     water->setName("lake");
     water->getSurface()->setSize(lake::kSize);
+    // the default swell plus two short ripples: on a lake the ripples make the caustics (apex
+    // curvature a k^2 ~ 1/m puts their focus 3-4 m down, in the shallows), and the caustics
+    // texture resolves them at 512 texels over the lake (0.3 m)
+    std::vector<osgWater::Wave> waves = osgWater::defaultWaves();
+    for (const osg::Vec4& r : { osg::Vec4(0.2f, 0.98f, 1.2f, 0.03f), osg::Vec4(-0.95f, 0.31f, 0.9f, 0.025f) }) {
+        osgWater::Wave w;
+        w.direction.set(r.x(), r.y());
+        w.direction.normalize();
+        w.wavelength = r.z();
+        w.amplitude = r.w();
+        w.phase = 0.7f * float(waves.size());
+        waves.push_back(w);
+    }
+    water->getSurface()->setWaves(waves);
+    water->getSettings()->setCausticsResolution(512);
     osg::ref_ptr<osg::ProxyNode> scene = new osg::ProxyNode;
     scene->setFileName(0, "lake/lake.obj");
     scene->setLoadingExternalReferenceMode(osg::ProxyNode::LOAD_IMMEDIATELY);

@@ -18,6 +18,17 @@ std::string describeSettings(const WaterSettings& s)
     return o.str();
 }
 
+std::string describeCaustics(const osgWater::WaterNode& water)
+{
+    const WaterSettings& s = *water.getSettings();
+    if (!s.getCausticsEnabled()) return "off";
+    std::ostringstream o;
+    o << osgWater::CausticsCamera::gatherName(water.getActiveCausticsGather())
+      << (s.getCausticsGather() == WaterSettings::GATHER_AUTO ? " (auto)" : "") << " " << s.getCausticsResolution()
+      << "/" << s.getPhotonGridSize();
+    return o.str();
+}
+
 namespace {
 
 class HudUpdate : public osg::NodeCallback
@@ -36,11 +47,14 @@ public:
         osgWater::ViewPasses* p = _water->getViewPasses(_camera.get());
         char fps[32] = "-- fps"; // until two frames have been seen
         if (_fps > 0) std::snprintf(fps, sizeof(fps), "%.1f fps", _fps);
+        const osgWater::CausticsCamera* c = _water->getCausticsCamera();
         char line[256];
-        std::snprintf(line, sizeof(line), "%s   reflection %.2f ms   refraction %.2f ms (GPU)\n", fps,
-                      p ? p->getReflectionMilliseconds() : -1.0, p ? p->getRefractionMilliseconds() : -1.0);
-        _text->setText(std::string(line) + describeSettings(*_water->getSettings()) +
-                       "\nkeys: r reflection  f refraction  t technique  +/- steps  m fresnel  o rotation  s stats  arrows move");
+        std::snprintf(line, sizeof(line), "%s   reflection %.2f ms   refraction %.2f ms   caustics %.2f ms (GPU)\n", fps,
+                      p ? p->getReflectionMilliseconds() : -1.0, p ? p->getRefractionMilliseconds() : -1.0,
+                      c ? c->getMilliseconds() : -1.0);
+        _text->setText(std::string(line) + describeSettings(*_water->getSettings()) + ", caustics " +
+                       describeCaustics(*_water) +
+                       "\nkeys: r reflection  f refraction  t technique  +/- steps  m fresnel  o rotation  k caustics  g gather  s stats  arrows move");
         traverse(node, nv);
     }
 

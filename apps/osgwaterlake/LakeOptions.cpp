@@ -31,6 +31,12 @@ void LakeOptions::describe(osg::ApplicationUsage& u)
     u.addCommandLineOption("--no-reflection", "Switch reflection off");
     u.addCommandLineOption("--no-refraction", "Switch refraction off");
     u.addCommandLineOption("--no-rotation", "Do not rotate the refraction camera (thesis 5.1)");
+    u.addCommandLineOption("--no-caustics", "Switch caustics off");
+    u.addCommandLineOption("--gather <auto|copy|texture|cpu>", "Caustics photon gather: points from a copied vertex buffer, points reading the photon texture, CPU");
+    u.addCommandLineOption("--caustics-size <n>", "Caustics texture size (default 256)");
+    u.addCommandLineOption("--photons <n>", "Photons per side of the photon grid (default 512)");
+    u.addCommandLineOption("--sun <x> <y> <z>", "Direction towards the sun");
+    u.addCommandLineOption("--compare-caustics", "Headless: time caustics off and each gather path in one run");
 }
 
 bool LakeOptions::read(osg::ArgumentParser& args)
@@ -39,6 +45,7 @@ bool LakeOptions::read(osg::ArgumentParser& args)
     args.read("--frames", frames);
     frames = std::max(frames, 2);
     if (args.read("--no-compare")) compare = false;
+    if (args.read("--compare-caustics")) compareCaustics = true;
     if (args.read("--no-hud")) hud = false;
     args.read("--screenshot", screenshot);
     args.read("--size", width, height);
@@ -70,6 +77,17 @@ bool LakeOptions::read(osg::ArgumentParser& args)
     if (args.read("--no-reflection")) _setters.push_back([](WaterSettings& w) { w.setReflectionEnabled(false); });
     if (args.read("--no-refraction")) _setters.push_back([](WaterSettings& w) { w.setRefractionEnabled(false); });
     if (args.read("--no-rotation")) _setters.push_back([](WaterSettings& w) { w.setRefractionCameraRotation(false); });
+    if (args.read("--no-caustics")) _setters.push_back([](WaterSettings& w) { w.setCausticsEnabled(false); });
+    if (args.read("--gather", s)) {
+        const WaterSettings::CausticsGather g = s == "copy" ? WaterSettings::GATHER_POINTS_COPY
+                                              : s == "texture" ? WaterSettings::GATHER_POINTS_TEXTURE
+                                              : s == "cpu" ? WaterSettings::GATHER_CPU : WaterSettings::GATHER_AUTO;
+        if (g == WaterSettings::GATHER_AUTO && s != "auto") { std::cerr << "error: --gather auto|copy|texture|cpu" << std::endl; return false; }
+        _setters.push_back([g](WaterSettings& w) { w.setCausticsGather(g); });
+    }
+    if (args.read("--caustics-size", n)) _setters.push_back([n](WaterSettings& w) { w.setCausticsResolution(n); });
+    if (args.read("--photons", n)) _setters.push_back([n](WaterSettings& w) { w.setPhotonGridSize(n); });
+    if (args.read("--sun", f, g, h)) _setters.push_back([f, g, h](WaterSettings& w) { w.setSunDirection(osg::Vec3(f, g, h)); });
 
     for (int pos = 1; pos < args.argc(); ++pos)
         if (!args.isOption(pos)) { scene = args[pos]; args.remove(pos); break; }

@@ -14,6 +14,7 @@ struct LakeOptions {
     bool headless = false;
     int frames = 60;
     bool compare = true;           // headless: also time the scene without water
+    bool compareCaustics = false;  // headless: time caustics off and each gather path
     std::string screenshot = "osgwaterlake.png";
     bool hud = true;
 

@@ -14,6 +14,10 @@ bool WaterKeys::handle(const osgGA::GUIEventAdapter& ea, osgGA::GUIActionAdapter
     case '-': s.setSearchSteps(std::max(s.getSearchSteps() - 1, 1)); return true;
     case 'm': s.setFresnelModel(WaterSettings::FresnelModel((int(s.getFresnelModel()) + 1) % 3)); return true;
     case 'o': s.setRefractionCameraRotation(!s.getRefractionCameraRotation()); return true;
+    case 'k': s.setCausticsEnabled(!s.getCausticsEnabled()); return true;
+    case 'g': // auto -> copy -> texture -> cpu -> auto
+        s.setCausticsGather(WaterSettings::CausticsGather((int(s.getCausticsGather()) + 1) % 4));
+        return true;
     default: break;
     }
     return false;
@@ -43,5 +47,7 @@ void WaterKeys::getUsage(osg::ApplicationUsage& u) const
     u.addKeyboardMouseBinding("+/-", "More / fewer search steps");
     u.addKeyboardMouseBinding("m", "Next Fresnel model");
     u.addKeyboardMouseBinding("o", "Toggle refraction-camera rotation");
+    u.addKeyboardMouseBinding("k", "Toggle caustics");
+    u.addKeyboardMouseBinding("g", "Next caustics gather (auto, copy, texture, CPU)");
     u.addKeyboardMouseBinding("Arrows, Page Up/Down", "Move the camera");
 }

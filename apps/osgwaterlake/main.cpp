@@ -16,6 +16,7 @@
 #include <osg/Switch>
 #include <osg/Timer>
 #include <cstdio>
+#include <functional>
 #include <iostream>
 
 namespace {
@@ -42,34 +43,69 @@ struct WriteExactly : public osgViewer::ScreenCaptureHandler::CaptureOperation {
     std::string file;
 };
 
+// One thing timed in the headless run: a name and how to switch the scene to it.
+struct Configuration {
+    std::string name;
+    std::function<void()> select;
+    std::vector<double> ms, causticsMs;
+};
+
+std::vector<Configuration> configurations(osg::Switch* scenes, osgWater::WaterNode* water, const LakeOptions& o)
+{
+    using osgWater::WaterSettings;
+    WaterSettings* s = water->getSettings();
+    const bool caustics = s->getCausticsEnabled();
+    const WaterSettings::CausticsGather gather = s->getCausticsGather();
+    std::vector<Configuration> c;
+    c.push_back({ "water", [=] { scenes->setSingleChildOn(0); s->setCausticsEnabled(caustics); s->setCausticsGather(gather); }, {} });
+    if (o.compareCaustics) {
+        c[0].name = "water, caustics off";
+        c[0].select = [=] { scenes->setSingleChildOn(0); s->setCausticsEnabled(false); };
+        for (WaterSettings::CausticsGather g : { WaterSettings::GATHER_POINTS_COPY, WaterSettings::GATHER_POINTS_TEXTURE,
+                                                 WaterSettings::GATHER_CPU })
+            c.push_back({ std::string("water, caustics ") + osgWater::CausticsCamera::gatherName(g),
+                          [=] { scenes->setSingleChildOn(0); s->setCausticsEnabled(true); s->setCausticsGather(g); }, {} });
+    }
+    if (o.compare) c.push_back({ "without water", [=] { scenes->setSingleChildOn(1); }, {} });
+    return c;
+}
+
 int runHeadless(osgViewer::Viewer& viewer, osg::Switch* scenes, osgWater::WaterNode* water, osg::Node* hud, const LakeOptions& o)
 {
     if (hud) hud->setNodeMask(0); // text costs the same with and without water: keep it out of the ratio
     viewer.getCamera()->setViewMatrixAsLookAt(o.eye, o.center, o.up);
-    std::vector<double> waterMs, plainMs, reflMs, refrMs;
+    std::vector<Configuration> configs = configurations(scenes, water, o);
+    std::vector<double> reflMs, refrMs;
+    const osgWater::WaterSettings* s = water->getSettings();
+    const bool caustics = s->getCausticsEnabled();
+    const osgWater::WaterSettings::CausticsGather gather = s->getCausticsGather();
     double t = o.time;
     const double dt = 1.0 / 60.0;
-    // alternating blocks, so drifts in machine load hit both scenes alike
-    const int blocks = o.compare ? 5 : 1, perBlock = std::max(o.frames / blocks, 1);
+    // alternating blocks, so drifts in machine load hit every configuration alike
+    const int blocks = configs.size() > 1 ? 5 : 1, perBlock = std::max(o.frames / blocks, 1);
     for (int b = 0; b < blocks; ++b)
-        for (int which = 0; which < (o.compare ? 2 : 1); ++which) {
-            scenes->setSingleChildOn(which);
-            for (int i = 0; i <= perBlock; ++i) {
+        for (size_t which = 0; which < configs.size(); ++which) {
+            configs[which].select();
+            for (int i = 0; i <= perBlock + 1; ++i) {
                 const osg::Timer_t t0 = osg::Timer::instance()->tick();
                 viewer.frame(t);
                 t += dt;
                 const double ms = osg::Timer::instance()->delta_m(t0, osg::Timer::instance()->tick());
-                if (i == 0) continue; // the first frame after a switch warms up
-                (which == 0 ? waterMs : plainMs).push_back(ms);
-                if (which == 0) {
-                    if (osgWater::ViewPasses* p = water->getViewPasses(viewer.getCamera())) {
-                        if (p->getReflectionMilliseconds() >= 0) reflMs.push_back(p->getReflectionMilliseconds());
-                        if (p->getRefractionMilliseconds() >= 0) refrMs.push_back(p->getRefractionMilliseconds());
-                    }
+                if (i < 2) continue; // the first frames after a switch warm up (GPU times lag a frame)
+                configs[which].ms.push_back(ms);
+                const osgWater::CausticsCamera* c = water->getCausticsCamera();
+                if (c && scenes->getValue(0) && s->getCausticsEnabled() && c->getMilliseconds() >= 0)
+                    configs[which].causticsMs.push_back(c->getMilliseconds());
+                if (which != 0) continue;
+                if (osgWater::ViewPasses* p = water->getViewPasses(viewer.getCamera())) {
+                    if (p->getReflectionMilliseconds() >= 0) reflMs.push_back(p->getReflectionMilliseconds());
+                    if (p->getRefractionMilliseconds() >= 0) refrMs.push_back(p->getRefractionMilliseconds());
                 }
             }
         }
-    scenes->setSingleChildOn(0);
+    scenes->setSingleChildOn(0); // the screenshot: the water as configured
+    water->getSettings()->setCausticsEnabled(caustics);
+    water->getSettings()->setCausticsGather(gather);
     if (hud) hud->setNodeMask(~0u);
     osg::ref_ptr<osg::Image> image = osgWaterApps::captureFrame(viewer, o.time); // the screenshot is at the start time
     if (!image.valid() || !osgDB::writeImageFile(*image, o.screenshot)) {
@@ -77,12 +113,19 @@ int runHeadless(osgViewer::Viewer& viewer, osg::Switch* scenes, osgWater::WaterN
         return 1;
     }
     std::cout << "screenshot: " << o.screenshot << std::endl;
-    std::cout << "settings: " << describeSettings(*water->getSettings()) << std::endl;
-    const double w = osgWaterApps::median(waterMs), p = osgWaterApps::median(plainMs);
-    std::printf("median frame time: water %.2f ms (%zu frames)", w, waterMs.size());
-    if (!plainMs.empty()) std::printf(", without water %.2f ms (%zu frames), ratio %.2f", p, plainMs.size(), p > 0 ? w / p : 0.0);
-    std::printf("\nmedian pass GPU time: reflection %.2f ms, refraction %.2f ms\n", osgWaterApps::median(reflMs),
-                osgWaterApps::median(refrMs));
+    std::cout << "settings: " << describeSettings(*water->getSettings()) << ", caustics " << describeCaustics(*water) << std::endl;
+    const double first = osgWaterApps::median(configs[0].ms), last = osgWaterApps::median(configs.back().ms);
+    std::printf("median frame time over %d alternating blocks of %d frames:\n", blocks, perBlock);
+    for (const Configuration& c : configs) {
+        const double m = osgWaterApps::median(c.ms);
+        std::printf("  %-32s %8.2f ms", c.name.c_str(), m);
+        if (o.compareCaustics) std::printf("   x%.3f of caustics off", first > 0 ? m / first : 0.0);
+        else if (o.compare) std::printf("   x%.2f of without water", last > 0 ? m / last : 0.0);
+        if (!c.causticsMs.empty()) std::printf("   caustics GPU %.2f ms", osgWaterApps::median(c.causticsMs));
+        std::printf("\n");
+    }
+    std::printf("median pass GPU time (%s): reflection %.2f ms, refraction %.2f ms\n",
+                configs[0].name.c_str(), osgWaterApps::median(reflMs), osgWaterApps::median(refrMs));
     return 0;
 }
 
