@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <set>
 
 using namespace testing_gl;
 using namespace osgWater;
@@ -306,4 +307,40 @@ TEST(RenderCaustics, TheBedIsLitByTheCausticsAndShadowedByUnderwaterObjects)
     s->setCausticsEnabled(false);
     EXPECT_NEAR(bedColour(osg::Vec3d(-3, 0, -2)), ndl, 0.01);
     EXPECT_NEAR(bedColour(osg::Vec3d(1.8, 0, -2)), ndl, 0.01);
+}
+
+TEST(RenderCaustics, SunDepthMapIsRedrawnOnlyWhenTheSunMoves)
+{
+    CausticsScene sc(20.0f, 64, 128, osg::Vec3(0.3f, 0.2f, 0.93f), -2.0f);
+    REQUIRE_GL(sc.h);
+    sc.h.frame(1.0);
+    ASSERT_NE(sc.water->getCausticsCamera(), nullptr);
+    EXPECT_TRUE(sc.water->getCausticsCamera()->getDepthDrawn());
+    sc.h.frame(2.0); // waves move, the sun does not: the underwater scene's depth is unchanged
+    EXPECT_FALSE(sc.water->getCausticsCamera()->getDepthDrawn());
+    sc.water->getSettings()->setSunDirection(osg::Vec3(0.1f, 0.2f, 0.95f));
+    sc.h.frame(3.0);
+    EXPECT_TRUE(sc.water->getCausticsCamera()->getDepthDrawn());
+    sc.water->getCausticsCamera()->dirtyDepth();
+    sc.h.frame(4.0);
+    EXPECT_TRUE(sc.water->getCausticsCamera()->getDepthDrawn());
+    sc.h.frame(5.0);
+    EXPECT_FALSE(sc.water->getCausticsCamera()->getDepthDrawn());
+}
+
+TEST(RenderCaustics, AutoGatherTimesEveryPathThenKeepsOne)
+{
+    CausticsScene sc(20.0f, 64, 128, osg::Vec3(0.3f, 0.2f, 0.93f), -2.0f);
+    REQUIRE_GL(sc.h);
+    std::set<int> seen;
+    for (int i = 0; i < 40; ++i) {
+        sc.h.frame(1.0 + i / 60.0);
+        seen.insert(int(sc.water->getActiveCausticsGather()));
+    }
+    EXPECT_EQ(seen.size(), 3u) << "not every gather was tried";
+    const WaterSettings::CausticsGather kept = sc.water->getActiveCausticsGather();
+    for (int i = 0; i < 10; ++i) {
+        sc.h.frame(2.0 + i / 60.0);
+        EXPECT_EQ(sc.water->getActiveCausticsGather(), kept);
+    }
 }
