@@ -24,7 +24,8 @@ std::string describeCaustics(const osgWater::WaterNode& water)
     if (!s.getCausticsEnabled()) return "off";
     std::ostringstream o;
     o << osgWater::CausticsCamera::gatherName(water.getActiveCausticsGather())
-      << (s.getCausticsGather() == WaterSettings::GATHER_AUTO ? " (auto)" : "") << " " << s.getCausticsResolution()
+      << (s.getCausticsGather() != WaterSettings::GATHER_AUTO ? ""
+          : water.getCausticsCamera() && water.getCausticsCamera()->isAutoGatherSettled() ? " (auto)" : " (auto, timing)") << " " << s.getCausticsResolution()
       << "/" << s.getPhotonGridSize();
     return o.str();
 }
