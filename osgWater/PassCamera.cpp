@@ -30,13 +30,7 @@ public:
 PassCamera::PassCamera(osg::Group* scene, osg::StateSet* sceneState, int textureSize)
     : _scene(scene), _sceneState(sceneState), _size(textureSize), _keepPlane(0.0, 0.0, 1.0, 0.0)
 {
-    setRenderOrder(osg::Camera::PRE_RENDER);
-    setRenderTargetImplementation(osg::Camera::FRAME_BUFFER_OBJECT);
-    setReferenceFrame(osg::Camera::ABSOLUTE_RF);
-    // near/far come from the scene bound (PassMath), so the depth texture's projection is known exactly
-    setComputeNearFarMode(osg::CullSettings::DO_NOT_COMPUTE_NEAR_FAR);
-    setClearMask(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    setViewport(0, 0, textureSize, textureSize);
+    setUpPassTarget(this, textureSize, 0);
     setCullCallback(new PassCullCallback);
 
     _color = makeTexture(textureSize, GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE, true);
@@ -53,7 +47,7 @@ PassCamera::PassCamera(osg::Group* scene, osg::StateSet* sceneState, int texture
     ss->setDataVariance(osg::Object::DYNAMIC);
 }
 
-osg::Texture2D* PassCamera::makeTexture(int size, GLenum internalFormat, GLenum format, GLenum type, bool linear)
+osg::Texture2D* osgWater::makeTargetTexture(int size, GLenum internalFormat, GLenum format, GLenum type, bool linear)
 {
     osg::Texture2D* t = new osg::Texture2D;
     t->setTextureSize(size, size);
@@ -66,6 +60,17 @@ osg::Texture2D* PassCamera::makeTexture(int size, GLenum internalFormat, GLenum 
     t->setWrap(osg::Texture::WRAP_S, osg::Texture::CLAMP_TO_EDGE);
     t->setWrap(osg::Texture::WRAP_T, osg::Texture::CLAMP_TO_EDGE);
     return t;
+}
+
+void osgWater::setUpPassTarget(osg::Camera* camera, int size, int order)
+{
+    camera->setRenderOrder(osg::Camera::PRE_RENDER, order);
+    camera->setRenderTargetImplementation(osg::Camera::FRAME_BUFFER_OBJECT);
+    camera->setReferenceFrame(osg::Camera::ABSOLUTE_RF);
+    // near/far come from the scene bound (PassMath), so a depth texture's projection is known exactly
+    camera->setComputeNearFarMode(osg::CullSettings::DO_NOT_COMPUTE_NEAR_FAR);
+    camera->setClearMask(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    camera->setViewport(0, 0, size, size);
 }
 
 void PassCamera::setKeepPlane(const osg::Plane& localPlane)

@@ -1,5 +1,6 @@
 #include <osgWater/PhotonCamera>
 #include <osgWater/Shaders>
+#include <osgWater/PassCamera>
 #include <osgUtil/CullVisitor>
 
 using namespace osgWater;
@@ -29,25 +30,13 @@ PhotonCamera::PhotonCamera(osg::StateSet* waterState, int gridSize, bool floatTa
     : _size(gridSize), _waterState(waterState)
 {
     setName("osgWater.PhotonCamera");
-    setRenderOrder(osg::Camera::PRE_RENDER, -2); // after the sun depth map, before the gather
-    setRenderTargetImplementation(osg::Camera::FRAME_BUFFER_OBJECT);
-    setReferenceFrame(osg::Camera::ABSOLUTE_RF);
-    setComputeNearFarMode(osg::CullSettings::DO_NOT_COMPUTE_NEAR_FAR);
-    setClearMask(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    setUpPassTarget(this, gridSize, -2); // after the sun depth map, before the gather
     setClearColor(osg::Vec4(0.0f, 0.0f, 0.0f, 0.0f)); // alpha 0: no photon
-    setViewport(0, 0, gridSize, gridSize);
     setCullCallback(new PhotonCullCallback);
 
-    _photons = new osg::Texture2D;
+    _photons = makeTargetTexture(gridSize, floatTarget ? GL_RGBA32F_ARB : GL_RGBA16, GL_RGBA,
+                                 floatTarget ? GL_FLOAT : GL_UNSIGNED_SHORT, false);
     _photons->setName("osgWater.photons");
-    _photons->setTextureSize(gridSize, gridSize);
-    _photons->setInternalFormat(floatTarget ? GL_RGBA32F_ARB : GL_RGBA16);
-    _photons->setSourceFormat(GL_RGBA);
-    _photons->setSourceType(floatTarget ? GL_FLOAT : GL_UNSIGNED_SHORT);
-    _photons->setFilter(osg::Texture::MIN_FILTER, osg::Texture::NEAREST);
-    _photons->setFilter(osg::Texture::MAG_FILTER, osg::Texture::NEAREST);
-    _photons->setWrap(osg::Texture::WRAP_S, osg::Texture::CLAMP_TO_EDGE);
-    _photons->setWrap(osg::Texture::WRAP_T, osg::Texture::CLAMP_TO_EDGE);
     attach(osg::Camera::COLOR_BUFFER, _photons.get());
     attach(osg::Camera::DEPTH_BUFFER, GL_DEPTH_COMPONENT24); // waves may hide each other from a low sun
 

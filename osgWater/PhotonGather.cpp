@@ -1,6 +1,7 @@
 #include <osgWater/PhotonGather>
 #include <osgWater/PhotonSplat>
 #include <osgWater/Shaders>
+#include <osgWater/PassCamera>
 #include <osg/BlendFunc>
 #include <osg/Geometry>
 #include <osg/GLExtensions>
@@ -116,24 +117,15 @@ PhotonGather::PhotonGather(osg::Texture2D* photons, int gridSize, int resolution
       _valueScale(floatTarget ? 1.0f : 16.0f)
 {
     setName("osgWater.PhotonGather");
-    setRenderOrder(osg::Camera::PRE_RENDER, -1); // after the photons, before the views' passes
-    setRenderTargetImplementation(osg::Camera::FRAME_BUFFER_OBJECT);
-    setReferenceFrame(osg::Camera::ABSOLUTE_RF);
-    setComputeNearFarMode(osg::CullSettings::DO_NOT_COMPUTE_NEAR_FAR);
+    setUpPassTarget(this, resolution, -1); // after the photons, before the views' passes
     setClearMask(GL_COLOR_BUFFER_BIT);
     setClearColor(osg::Vec4(0.0f, 0.0f, 0.0f, 0.0f));
-    setViewport(0, 0, resolution, resolution);
     setProjectionMatrix(osg::Matrixd::identity()); // the splat shader writes clip space itself
     setViewMatrix(osg::Matrixd::identity());
 
-    _caustics = new osg::Texture2D;
+    _caustics = makeTargetTexture(resolution, floatTarget ? GL_R32F : GL_RGBA16, floatTarget ? GL_RED : GL_RGBA,
+                                  floatTarget ? GL_FLOAT : GL_UNSIGNED_SHORT, true);
     _caustics->setName("osgWater.caustics");
-    _caustics->setTextureSize(resolution, resolution);
-    _caustics->setInternalFormat(floatTarget ? GL_R32F : GL_RGBA16);
-    _caustics->setSourceFormat(floatTarget ? GL_RED : GL_RGBA);
-    _caustics->setSourceType(floatTarget ? GL_FLOAT : GL_UNSIGNED_SHORT);
-    _caustics->setWrap(osg::Texture::WRAP_S, osg::Texture::CLAMP_TO_EDGE);
-    _caustics->setWrap(osg::Texture::WRAP_T, osg::Texture::CLAMP_TO_EDGE);
     attach(osg::Camera::COLOR_BUFFER, _caustics.get());
 
     osg::StateSet* ss = getOrCreateStateSet();

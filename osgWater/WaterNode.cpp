@@ -126,7 +126,7 @@ void WaterNode::cull(osgUtil::CullVisitor& cv)
     ctx.clearColor = camera->getClearColor();
     ctx.settings = &s;
     // 3b. caustics: the sun's passes, once per frame for all views (before this view's passes)
-    ctx.caustics = cullCaustics(cv);
+    ctx.caustics = cullCaustics(cv, ctx.scene);
     passes->setTimingEnabled(_passTiming);
     passes->update(ctx, wantReflection, wantRefraction);
 
@@ -145,9 +145,8 @@ void WaterNode::cull(osgUtil::CullVisitor& cv)
     cv.popStateSet();
 }
 
-const osg::BoundingBox& WaterNode::sceneBox()
+const osg::BoundingBox& WaterNode::sceneBox(const osg::BoundingSphere& bs)
 {
-    const osg::BoundingSphere bs = osg::Group::computeBound();
     if (bs.center() != _sceneBoxKey.center() || bs.radius() != _sceneBoxKey.radius()) {
         _sceneBoxKey = bs;
         osg::ComputeBoundsVisitor cbv;
@@ -157,7 +156,7 @@ const osg::BoundingBox& WaterNode::sceneBox()
     return _sceneBox;
 }
 
-const CausticsLighting* WaterNode::cullCaustics(osgUtil::CullVisitor& cv)
+const CausticsLighting* WaterNode::cullCaustics(osgUtil::CullVisitor& cv, const osg::BoundingSphere& sceneBound)
 {
     const WaterSettings& s = *_settings;
     if (!s.getCausticsEnabled()) return nullptr;
@@ -165,12 +164,9 @@ const CausticsLighting* WaterNode::cullCaustics(osgUtil::CullVisitor& cv)
     CausticsCamera::Frame f;
     f.towardsSun = s.getSunDirection();
     f.water = _surface->getBoundingBox();
-    const float a = _surface->getMaxAmplitude();
-    f.water.zMin() -= a;
-    f.water.zMax() += a;
-    f.scene = sceneBox();
+    f.scene = sceneBox(sceneBound);
     f.level = _surface->getLevel();
-    f.clearance = a + s.getClipOffset();
+    f.clearance = _surface->getMaxAmplitude() + s.getClipOffset();
     f.surface = _surface.get();
     f.settings = &s;
     if (!CausticsCamera::needed(f)) return nullptr;
@@ -181,7 +177,10 @@ const CausticsLighting* WaterNode::cullCaustics(osgUtil::CullVisitor& cv)
     if (_caustics.valid() && done != _causticsFrame.end() && done->second == frame)
         return &_caustics->getLighting(); // another view already rendered them this frame
 
-    const CausticsSupport support = CausticsSupport::detect(context);
+    auto known = _causticsSupport.find(context);
+    if (known == _causticsSupport.end())
+        known = _causticsSupport.emplace(context, CausticsSupport::detect(context)).first;
+    const CausticsSupport& support = known->second;
     if (!_caustics.valid() || !_caustics->matches(s.getCausticsResolution(), s.getPhotonGridSize(), support.floatTargets))
         _caustics = new CausticsCamera(this, _states.getSceneStateSet(), _states.getWaterStateSet(),
                                        s.getCausticsResolution(), s.getPhotonGridSize(), support.floatTargets);
