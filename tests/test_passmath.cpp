@@ -159,6 +159,8 @@ TEST(PassMath, SunCameraEnclosesTheBoxAndLooksAlongTheSun)
         const osg::Vec3d fwd = osg::Matrixd::transform3x3(view, osg::Vec3d(0, 0, -1));
         EXPECT_NEAR((fwd + L).length(), 0.0, 1e-9);
         for (unsigned int i = 0; i < 8; ++i) {
+            // in front of the camera: the photon search takes points with eye z >= 0 for misses
+            EXPECT_LT((osg::Vec3d(box.corner(i)) * view).z(), -1e-3);
             const osg::Vec3d t = projectToTexture(osg::Vec3d(box.corner(i)), view, proj);
             for (int k = 0; k < 3; ++k) {
                 EXPECT_GE(t[k], 0.0);
