@@ -67,6 +67,32 @@ float fresnelExact(float cosI, float n1, float n2)
     return 0.5f * (rs * rs + rp * rp);
 }
 
+float fresnelModel(int model, float cosE, float n1, float n2, float q)
+{
+    if (model == 2) return fresnelExact(cosE, n1, n2);
+    if (model == 1) return fresnelPower(cosE, q);
+    return fresnelSchlick(cosE, normalReflectance(n1, n2), q);
+}
+
+FromBelow underwaterThesis(const glm::vec3& E, const glm::vec3& N, float n1, float n2, float q)
+{
+    FromBelow r;
+    r.R = (n1 / n2) * (N - E) - N;
+    r.F = fresnelSchlick(glm::dot(E, N), normalReflectance(n1, n2), q);
+    return r;
+}
+
+FromBelow underwaterPhysical(const glm::vec3& E, const glm::vec3& N, float n1, float n2, int model, float q)
+{
+    FromBelow r;
+    r.R = refract(-E, N, n1 / n2);
+    r.tir = glm::dot(r.R, r.R) < 0.5f;
+    if (r.tir) { r.F = 1.0f; return r; }
+    const float cosT = std::min(std::max(-glm::dot(r.R, N), 0.0f), 1.0f);
+    r.F = model == 2 ? fresnelExact(glm::dot(E, N), n1, n2) : fresnelModel(model, cosT, n1, n2, q);
+    return r;
+}
+
 float attenuation(float k, float d)
 {
     if (!(d >= 0.0f)) return 0.0f; // NaN or "no bottom"

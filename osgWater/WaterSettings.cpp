@@ -58,6 +58,8 @@ WaterSettings::WaterSettings()
       _refractionCameraRotation(true), _reflectionEnabled(true), _refractionEnabled(true),
       _causticsEnabled(true), _causticsFiltering(true), _causticsResolution(256), _photonGridSize(512),
       _causticsIntensity(1.0f), _causticsGather(GATHER_AUTO),
+      _underwaterModel(UNDERWATER_PHYSICAL), _glowEnabled(true), _glowIntensity(1.0f), _glowRadius(3.0f),
+      _glowResolution(0.25f), _glowExponent(200.0f),
       _sunDirection(defaultSunDirection()), _sunColor(1.0f, 1.0f, 0.9f), _ambientColor(0.35f, 0.38f, 0.45f),
       _revision(0)
 {
@@ -85,6 +87,8 @@ WaterSettings::WaterSettings(const WaterSettings& o, const osg::CopyOp& copyop)
       _causticsEnabled(o._causticsEnabled), _causticsFiltering(o._causticsFiltering),
       _causticsResolution(o._causticsResolution), _photonGridSize(o._photonGridSize),
       _causticsIntensity(o._causticsIntensity), _causticsGather(o._causticsGather),
+      _underwaterModel(o._underwaterModel), _glowEnabled(o._glowEnabled), _glowIntensity(o._glowIntensity),
+      _glowRadius(o._glowRadius), _glowResolution(o._glowResolution), _glowExponent(o._glowExponent),
       _sunDirection(o._sunDirection), _sunColor(o._sunColor), _ambientColor(o._ambientColor),
       _revision(0)
 {
@@ -107,6 +111,10 @@ void WaterSettings::setRefractionTextureSize(int s) { _refractionTextureSize = c
 void WaterSettings::setCausticsResolution(int s) { _causticsResolution = clampInt("causticsResolution", s, 16, 4096); touch(); }
 void WaterSettings::setPhotonGridSize(int s) { _photonGridSize = clampInt("photonGridSize", s, 16, 4096); touch(); }
 void WaterSettings::setCausticsIntensity(float v) { _causticsIntensity = clampOr("causticsIntensity", v, 0.0f, 100.0f, 1.0f); touch(); }
+void WaterSettings::setGlowIntensity(float v) { _glowIntensity = clampOr("glowIntensity", v, 0.0f, 100.0f, 1.0f); touch(); }
+void WaterSettings::setGlowRadius(float r) { _glowRadius = clampOr("glowRadius", r, 0.0f, 32.0f, 3.0f); touch(); }
+void WaterSettings::setGlowResolution(float f) { _glowResolution = clampOr("glowResolution", f, 1.0f / 64.0f, 1.0f, 0.25f); touch(); }
+void WaterSettings::setGlowExponent(float e) { _glowExponent = clampOr("glowExponent", e, 1.0f, 10000.0f, 200.0f); touch(); }
 void WaterSettings::setSunColor(const osg::Vec3& c) { _sunColor = clampColor("sunColor", c, osg::Vec3(1.0f, 1.0f, 0.9f), 100.0f); touch(); }
 void WaterSettings::setAmbientColor(const osg::Vec3& c) { _ambientColor = clampColor("ambientColor", c, osg::Vec3(0.35f, 0.38f, 0.45f), 100.0f); touch(); }
 

@@ -54,6 +54,15 @@ REGISTER_OBJECT_WRAPPER(osgWater_WaterSettings, new osgWater::WaterSettings, osg
         ADD_ENUM_VALUE(GATHER_POINTS_TEXTURE);
         ADD_ENUM_VALUE(GATHER_CPU);
     END_ENUM_SERIALIZER();
+    BEGIN_ENUM_SERIALIZER(UnderwaterModel, UNDERWATER_PHYSICAL);
+        ADD_ENUM_VALUE(UNDERWATER_PHYSICAL);
+        ADD_ENUM_VALUE(UNDERWATER_THESIS);
+    END_ENUM_SERIALIZER();
+    ADD_BOOL_SERIALIZER(GlowEnabled, true);
+    ADD_FLOAT_SERIALIZER(GlowIntensity, 1.0f);
+    ADD_FLOAT_SERIALIZER(GlowRadius, 3.0f);
+    ADD_FLOAT_SERIALIZER(GlowResolution, 0.25f);
+    ADD_FLOAT_SERIALIZER(GlowExponent, 200.0f);
     ADD_VEC3F_SERIALIZER(SunDirection, osgWater::WaterSettings::defaultSunDirection());
     ADD_VEC3F_SERIALIZER(SunColor, osg::Vec3f(1.0f, 1.0f, 0.9f));
     ADD_VEC3F_SERIALIZER(AmbientColor, osg::Vec3f(0.35f, 0.38f, 0.45f));

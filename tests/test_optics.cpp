@@ -238,3 +238,64 @@ TEST(Optics, ToleranceStopsTheSearchEarlyWithoutLosingAccuracy)
     EXPECT_LT(early.error, 0.01f);
     EXPECT_NEAR(glm::length(early.W - all.W), 0.0f, 0.01f);
 }
+
+// Thesis §7.5 and issue 5: the two models of the surface seen from below (eye in water).
+TEST(Optics, FromBelowPhysicalModelObeysSnellWithTotalInternalReflection)
+{
+    const glm::vec3 N(0.0f, 0.0f, -1.0f); // faces the underwater eye
+    const float crit = criticalAngle(kWater, kAir);
+    EXPECT_NEAR(crit * 180.0f / float(M_PI), 48.6f, 0.05f);
+    auto eyeAt = [](float t) { return glm::vec3(-std::sin(t), 0.0f, -std::cos(t)); }; // towards the eye
+    for (float deg = 0.0f; deg < 48.5f; deg += 4.0f) {
+        const float ti = deg * float(M_PI) / 180.0f;
+        const FromBelow b = underwaterPhysical(eyeAt(ti), N, kWater, kAir, 2, 5.0f);
+        ASSERT_FALSE(b.tir) << deg;
+        EXPECT_NEAR(glm::length(b.R), 1.0f, 1e-5f);
+        EXPECT_GT(b.R.z, 0.0f); // into the air
+        EXPECT_NEAR(kWater * std::sin(ti), kAir * std::sqrt(b.R.x * b.R.x + b.R.y * b.R.y), 1e-5f) << deg;
+        EXPECT_NEAR(b.F, fresnelExact(std::cos(ti), kWater, kAir), 1e-6f);
+    }
+    for (float deg = 48.7f; deg < 90.0f; deg += 4.0f) {
+        const FromBelow b = underwaterPhysical(eyeAt(deg * float(M_PI) / 180.0f), N, kWater, kAir, 0, 5.0f);
+        EXPECT_TRUE(b.tir) << deg;
+        EXPECT_EQ(b.F, 1.0f) << deg;
+    }
+}
+
+TEST(Optics, FromBelowSchlickNeedsTheTransmittedAngle)
+{
+    // Just inside the critical angle the exact reflectance rises to 1. Schlick with the incident
+    // (water-side) cosine stays near f there; with the transmitted (air-side) cosine it follows.
+    const glm::vec3 N(0.0f, 0.0f, -1.0f);
+    const float crit = criticalAngle(kWater, kAir);
+    float worstIncident = 0.0f, worstTransmitted = 0.0f;
+    for (int i = 0; i <= 400; ++i) {
+        const float ti = crit * float(i) / 400.0f * 0.99999f;
+        const glm::vec3 E(-std::sin(ti), 0.0f, -std::cos(ti));
+        const float exact = fresnelExact(std::cos(ti), kWater, kAir);
+        const FromBelow b = underwaterPhysical(E, N, kWater, kAir, 0, 5.0f);
+        worstTransmitted = std::max(worstTransmitted, std::fabs(b.F - exact));
+        worstIncident = std::max(worstIncident, std::fabs(fresnelSchlick(std::cos(ti), normalReflectance(kWater, kAir), 5.0f) - exact));
+    }
+    EXPECT_GT(worstIncident, 0.9f);     // issue 5: "wrong by up to 0.97"
+    EXPECT_LT(worstTransmitted, 0.06f); // Schlick's usual error
+}
+
+TEST(Optics, FromBelowThesisModelNeverVanishes)
+{
+    const glm::vec3 N(0.0f, 0.0f, -1.0f);
+    // straight up: R1 = up, F = f
+    FromBelow b = underwaterThesis(glm::vec3(0.0f, 0.0f, -1.0f), N, kWater, kAir, 5.0f);
+    EXPECT_NEAR(b.R.z, 1.0f, 1e-6f);
+    EXPECT_NEAR(b.F, normalReflectance(kWater, kAir), 1e-6f);
+    // beyond the critical angle eq. 12 still gives an upward-ish, non-zero ray (no TIR) and
+    // tangential component n sin(theta), as Snell's law would
+    for (float deg = 0.0f; deg < 90.0f; deg += 5.0f) {
+        const float t = deg * float(M_PI) / 180.0f;
+        b = underwaterThesis(glm::vec3(-std::sin(t), 0.0f, -std::cos(t)), N, kWater, kAir, 5.0f);
+        EXPECT_FALSE(b.tir);
+        EXPECT_GT(glm::length(b.R), 0.5f) << deg;
+        EXPECT_NEAR(b.R.x, kWater * std::sin(t), 1e-5f) << deg;
+        EXPECT_TRUE(finite(b.R));
+    }
+}

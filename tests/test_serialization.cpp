@@ -48,6 +48,9 @@ osg::ref_ptr<WaterNode> pond()
     s->setReflectionEnabled(false);
     s->setPhotonGridSize(128);
     s->setCausticsGather(WaterSettings::GATHER_CPU);
+    s->setUnderwaterModel(WaterSettings::UNDERWATER_THESIS);
+    s->setGlowEnabled(false);
+    s->setGlowRadius(5.0f);
     WaterSurface* f = w->getSurface();
     f->setLevel(1.5);
     f->setSize(60.0f);
@@ -97,6 +100,10 @@ TEST(Serialization, ExpectedTextReadsBackIntoTheSameNode)
     EXPECT_EQ(s->getPhotonGridSize(), 128);
     EXPECT_EQ(s->getCausticsGather(), WaterSettings::GATHER_CPU);
     EXPECT_EQ(s->getCausticsResolution(), 256); // absent: default
+    EXPECT_EQ(s->getUnderwaterModel(), WaterSettings::UNDERWATER_THESIS);
+    EXPECT_FALSE(s->getGlowEnabled());
+    EXPECT_FLOAT_EQ(s->getGlowRadius(), 5.0f);
+    EXPECT_FLOAT_EQ(s->getGlowResolution(), 0.25f); // absent: default
     const WaterSurface* f = w->getSurface();
     EXPECT_DOUBLE_EQ(f->getLevel(), 1.5);
     EXPECT_FLOAT_EQ(f->getSize(), 60.0f);

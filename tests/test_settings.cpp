@@ -24,6 +24,11 @@ TEST(Settings, DefaultsAreThesisTable1)
     EXPECT_NEAR(s->getAirIOR() / s->getWaterIOR(), 0.75f, 1e-3f); // the shader's 0.75
     EXPECT_EQ(s->getCausticsResolution(), 256);                     // thesis §9.2
     EXPECT_TRUE(s->getCausticsFiltering());                         // "with enabled filtering"
+    EXPECT_FLOAT_EQ(s->getGlowExponent(), 200.0f);                  // thesis §9.3 pow(R.E, 200)
+    EXPECT_FLOAT_EQ(s->getGlowRadius(), 3.0f);                      // thesis's 7x7 filter
+    EXPECT_FLOAT_EQ(s->getGlowResolution(), 0.25f);                 // issue 5: 1/4 per axis
+    EXPECT_FLOAT_EQ(s->getUnderwaterLookupScale(), 1.5f);           // m of eq. 13
+    EXPECT_EQ(s->getUnderwaterModel(), WaterSettings::UNDERWATER_PHYSICAL);
 }
 
 TEST(Settings, FovExtensionFallsWithEyeHeight)
@@ -83,6 +88,22 @@ TEST(Settings, AbsurdValuesAreClampedWithAWarning)
     EXPECT_EQ(s->getCausticsResolution(), 16);
     s->setPhotonGridSize(1 << 20);
     EXPECT_EQ(s->getPhotonGridSize(), 4096);
+    {
+        ScopedWarnCapture w;
+        s->setGlowResolution(INFINITY);
+        EXPECT_NE(w.str().find("glowResolution"), std::string::npos);
+    }
+    EXPECT_FLOAT_EQ(s->getGlowResolution(), 1.0f);
+    s->setGlowResolution(0.0f);
+    EXPECT_FLOAT_EQ(s->getGlowResolution(), 1.0f / 64.0f);
+    s->setGlowRadius(NAN);
+    EXPECT_FLOAT_EQ(s->getGlowRadius(), 3.0f);
+    s->setGlowRadius(1e9f);
+    EXPECT_FLOAT_EQ(s->getGlowRadius(), 32.0f);
+    s->setGlowExponent(0.0f);
+    EXPECT_FLOAT_EQ(s->getGlowExponent(), 1.0f);
+    s->setGlowIntensity(-1.0f);
+    EXPECT_FLOAT_EQ(s->getGlowIntensity(), 0.0f);
     s->setSunDirection(osg::Vec3(0.0f, 0.0f, 0.0f));
     EXPECT_NEAR(s->getSunDirection().length(), 1.0f, 1e-6f);
 }
