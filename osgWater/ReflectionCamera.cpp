@@ -26,5 +26,13 @@ void ReflectionCamera::update(const PassContext& ctx)
     const osg::Matrixd proj = withNearFar(extendFov(ctx.projection, ctx.fovExtension), zn, zf);
     osg::Vec3 sun = ctx.settings ? ctx.settings->getSunDirection() : osg::Vec3(0.0f, 0.0f, 1.0f);
     setMatrices(view, proj, sun);
-    setClearColor(ctx.clearColor);
+    // under water the mirror shows the underwater scene through water (thesis §7.5: eq. 10 with
+    // d = |A2 - C2| in this pass), and a ray that meets nothing ends in water
+    if (ctx.eyeBelow && ctx.settings) {
+        setUnderwaterFog(getOrCreateStateSet(), ctx.settings->getWaterColor(), ctx.settings->getAttenuation());
+        setClearColor(osg::Vec4(ctx.settings->getWaterColor(), 1.0f));
+    } else {
+        setUnderwaterFog(getOrCreateStateSet(), osg::Vec3(), 0.0f);
+        setClearColor(ctx.clearColor);
+    }
 }

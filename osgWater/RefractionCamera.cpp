@@ -32,4 +32,6 @@ void RefractionCamera::update(const PassContext& ctx)
     const osg::Matrixd proj = withNearFar(extendFov(ctx.projection, ctx.fovExtension), zn, zf);
     osg::Vec3 sun = ctx.settings ? ctx.settings->getSunDirection() : osg::Vec3(0.0f, 0.0f, 1.0f);
     setMatrices(view, proj, sun);
+    // from below this pass sees the air side: where it sees nothing, that is the sky
+    setClearColor(ctx.eyeBelow ? ctx.clearColor : osg::Vec4(0.0f, 0.0f, 0.0f, 0.0f));
 }

@@ -2,15 +2,18 @@
 // Fixed-function look of the OBJ loader's geometry: material * texture, one sun + ambient.
 // Under water, where caustics are on, the direct sun is the caustic irradiance of the photon pass
 // (thesis ch. 8), and zero where the sun's depth map shows something between the fragment and the
-// surface (underwater shadows).
+// surface (underwater shadows). With the eye under water everything is seen through water: its
+// colour is blended towards the water colour by the distance from this pass's eye (eq. 10).
 #pragma include "caustics.glsl"
 uniform sampler2D osgWater_BaseTexture; // unit 0; a white texel when the geometry has none
 uniform vec3 osgWater_SunEye;           // towards the sun, in this pass's eye space
 uniform vec3 osgWater_SunColor;
 uniform vec3 osgWater_Ambient;
+uniform vec4 osgWater_Fog;              // (water colour, k); k = 0: no water between eye and fragment
 
 in vec3 vNormalEye;
 in vec2 vTexCoord;
+in vec3 vEyePos;
 
 void main()
 {
@@ -23,5 +26,8 @@ void main()
     vec3 c = gl_FrontMaterial.emission.rgb
            + gl_FrontMaterial.ambient.rgb * osgWater_Ambient
            + gl_FrontMaterial.diffuse.rgb * osgWater_SunColor * (ndl * sun);
-    gl_FragColor = vec4(c * tex.rgb, gl_FrontMaterial.diffuse.a * tex.a);
+    c *= tex.rgb;
+    float a = exp(-osgWater_Fog.a * length(vEyePos)); // eq. 4 with d = |A - C|
+    c = osgWater_Fog.rgb + a * (c - osgWater_Fog.rgb);  // eq. 10
+    gl_FragColor = vec4(c, gl_FrontMaterial.diffuse.a * tex.a);
 }

@@ -9,12 +9,14 @@ out vec3 vNormalEye;
 out vec2 vTexCoord;
 out vec3 vSun;
 out float vAboveWater;
+out vec3 vEyePos;
 
 void main()
 {
     vec4 eye = gl_ModelViewMatrix * gl_Vertex;
     vNormalEye = gl_NormalMatrix * gl_Normal;
     vTexCoord = (gl_TextureMatrix[0] * gl_MultiTexCoord0).st;
+    vEyePos = eye.xyz / eye.w;
     vSun = (osgWater_EyeToSun * eye).xyz; // orthographic: w stays 1
     vAboveWater = dot(osgWater_WaterPlane, eye);
     gl_ClipDistance[0] = dot(osgWater_ClipPlane, eye);

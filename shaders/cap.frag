@@ -1,0 +1,47 @@
+#version 130
+#pragma import_defines(OSGWATER_GRID, OSGWATER_ONE_STEP, OSGWATER_FRESNEL, OSGWATER_UNDERWATER, OSGWATER_NO_REFLECTION, OSGWATER_NO_REFRACTION)
+// The near-plane cap. Where the near plane lies on the other side of the surface than the eye,
+// the eye's ray met the surface before the near plane, which clipped that bit of surface away:
+// without this the frame would show the scene behind it untinted, or the clear colour. Here the
+// crossing S on the pixel's ray (eye to near plane) is found by bisection on the animated height,
+// and the surface is shaded at S exactly as water.frag would.
+#pragma include "waves.glsl"
+#pragma include "watershade.glsl"
+
+in vec4 vNear;
+in vec4 vFar;
+
+float owSurfaceOffset(vec3 p)
+{
+#ifdef OSGWATER_GRID
+    return p.z - waterHeight(p.xy);
+#else
+    return p.z - osgWater_Level;
+#endif
+}
+
+void main()
+{
+    if (!(abs(vNear.w) > 1e-20)) discard;
+    vec3 P = vNear.xyz / vNear.w;
+    vec3 C = osgWater_EyeLocal;
+    bool below = osgWater_EyeBelow > 0.5;
+    float fP = owSurfaceOffset(P);
+    if (below ? fP < 0.0 : fP >= 0.0) discard; // same side as the eye: the surface itself is drawn
+    // bisection: a stays on the eye's side (the eye's side is the CPU's, from the uniform), b not
+    vec3 a = C, b = P;
+    for (int i = 0; i < 16; ++i) {
+        vec3 m = 0.5 * (a + b);
+        bool mBelow = owSurfaceOffset(m) < 0.0;
+        if (mBelow == below) a = m; else b = m;
+    }
+    vec3 S = 0.5 * (a + b);
+    vec3 D = owSafeNormalize(P - C, owSafeNormalize(vFar.xyz / vFar.w - P, vec3(0.0, 0.0, -1.0)));
+#ifdef OSGWATER_GRID
+    vec3 N = waterNormal(S.xy);
+#else
+    vec3 N = vec3(0.0, 0.0, 1.0);
+#endif
+    vec4 debugHit;
+    gl_FragColor = vec4(owShadeWater(S, N, -D, debugHit), 1.0);
+}

@@ -1,0 +1,129 @@
+// Colour of the water surface at a point U (water-local frame), thesis ch. 7, §7.5 and §9.1:
+// refraction by bottom search in the refraction pass's depth texture, reflection lookup
+// W = U + c R, depth attenuation, Fresnel, final mix (eq. 9). Shared by the surface (water.frag)
+// and the near-plane cap (cap.frag), which shades the surface where the near plane cut it away.
+// The includer lists OSGWATER_ONE_STEP, OSGWATER_FRESNEL, OSGWATER_UNDERWATER,
+// OSGWATER_NO_REFLECTION, OSGWATER_NO_REFRACTION in its import_defines.
+#pragma include "optics.glsl"
+
+uniform sampler2D osgWater_ReflectionTex;   // unit 1
+uniform sampler2D osgWater_RefractionTex;   // unit 2
+uniform vec3 osgWater_EyeLocal;
+uniform float osgWater_EyeBelow;            // 1.0 when the eye is under the (animated) surface
+uniform mat4 osgWater_ReflectionMVP;        // local -> reflection pass clip space
+uniform mat4 osgWater_RefractionView;       // local -> refraction pass eye space
+uniform mat4 osgWater_RefractionViewInverse;
+
+uniform vec2 osgWater_IOR;                  // (air, water)
+uniform vec3 osgWater_WaterColor;
+uniform float osgWater_Attenuation;         // k
+uniform float osgWater_FresnelQ;            // q
+uniform float osgWater_ReflectionScale;     // c
+uniform int osgWater_SearchSteps;
+uniform float osgWater_SearchTolerance;    // metres
+uniform vec2 osgWater_OneStep;              // (dv scale, dv max)
+uniform float osgWater_UnderwaterScale;     // m of eq. 13, 15
+
+vec3 owSampleProjected(sampler2D tex, mat4 mvp, vec4 P, vec3 fallback)
+{
+    vec4 c = mvp * P;
+    if (!(c.w > 1e-6)) return fallback;
+    return texture(tex, c.xy / c.w * 0.5 + 0.5).rgb;
+}
+
+// The refracted colour seen from above: bottom search along R (eq. 4-5).
+vec3 owRefractedFromAbove(vec3 U, vec3 R, out vec4 debugHit)
+{
+    debugHit = vec4(0.0);
+    vec3 u1 = (osgWater_RefractionView * vec4(U, 1.0)).xyz;
+    vec3 R1 = mat3(osgWater_RefractionView) * R;
+#ifdef OSGWATER_ONE_STEP
+    owBottomHit hit = owOneStepSearch(u1, R1, osgWater_OneStep.x, osgWater_OneStep.y);
+#else
+    owBottomHit hit = owIterativeSearch(u1, R1, osgWater_SearchSteps, osgWater_SearchTolerance);
+#endif
+    float d = -1.0;
+    vec3 col = osgWater_WaterColor;
+    if (hit.valid) {
+        vec2 tc;
+        owRefractionTexCoord(hit.W, tc);
+        col = texture(osgWater_RefractionTex, tc).rgb;
+        d = length(hit.A - u1);
+        debugHit = vec4((osgWater_RefractionViewInverse * vec4(hit.W, 1.0)).xyz, 1.0);
+    }
+    return osgWater_WaterColor + owAttenuation(osgWater_Attenuation, d) * (col - osgWater_WaterColor);
+}
+
+// The refracted colour seen from below (thesis §7.5): what lies along R in the air, then the
+// water between U and the eye (eq. 5 with d = |U - C1|).
+vec3 owRefractedFromBelow(vec3 U, vec3 R)
+{
+    mat4 mvp = osgWater_RefractionProj * osgWater_RefractionView;
+#if defined(OSGWATER_UNDERWATER) && OSGWATER_UNDERWATER == 1
+    vec3 col = owSampleProjected(osgWater_RefractionTex, mvp, vec4(U + osgWater_UnderwaterScale * R, 1.0),
+                                 osgWater_WaterColor); // eq. 13
+#else
+    // the same search as from above, in the air; nothing found along R: the sky in R's direction
+    vec3 u1 = (osgWater_RefractionView * vec4(U, 1.0)).xyz;
+    owBottomHit hit = owIterativeSearch(u1, mat3(osgWater_RefractionView) * R, osgWater_SearchSteps,
+                                        osgWater_SearchTolerance);
+    vec3 col;
+    vec2 tc;
+    if (hit.valid && owRefractionTexCoord(hit.W, tc)) col = texture(osgWater_RefractionTex, tc).rgb;
+    else col = owSampleProjected(osgWater_RefractionTex, mvp, vec4(R, 0.0), osgWater_WaterColor);
+#endif
+    float a = owAttenuation(osgWater_Attenuation, length(osgWater_EyeLocal - U));
+    return osgWater_WaterColor + a * (col - osgWater_WaterColor);
+}
+
+// U: the surface point, Nup: its unit normal (up, into the air), E: unit vector towards the eye.
+vec3 owShadeWater(vec3 U, vec3 Nup, vec3 E, out vec4 debugHit)
+{
+    debugHit = vec4(0.0);
+    bool below = osgWater_EyeBelow > 0.5;
+    float n1 = below ? osgWater_IOR.y : osgWater_IOR.x; // eye side
+    float n2 = below ? osgWater_IOR.x : osgWater_IOR.y;
+    vec3 N = owFaceNormal(below ? -Nup : Nup, E, 1e-3);
+    float cosE = clamp(dot(E, N), 0.0, 1.0);
+    vec3 Rr = reflect(-E, N);
+    vec3 R;
+    bool tir = false;
+    float F;
+    if (!below) {
+        R = refract(-E, N, n1 / n2); // never zero from air into water
+        F = owFresnel(cosE, n1, n2, osgWater_FresnelQ);
+    } else {
+#if defined(OSGWATER_UNDERWATER) && OSGWATER_UNDERWATER == 1
+        R = (n1 / n2) * (N - E) - N; // eq. 12: never zero, no total internal reflection
+        float r = (n1 - n2) / (n1 + n2);
+        F = owFresnelSchlick(cosE, r * r, osgWater_FresnelQ);
+#else
+        R = refract(-E, N, n1 / n2); // zero beyond the critical angle
+        tir = dot(R, R) < 0.5;
+        float cosT = clamp(-dot(R, N), 0.0, 1.0);
+#if defined(OSGWATER_FRESNEL) && OSGWATER_FRESNEL == 2
+        F = tir ? 1.0 : owFresnel(cosE, n1, n2, osgWater_FresnelQ); // exact at the incident angle
+#else
+        F = tir ? 1.0 : owFresnel(cosT, n1, n2, osgWater_FresnelQ); // approximations: air-side angle
+#endif
+#endif
+    }
+
+    // reflection, eq. 6 / 15 (under water the reflection pass already holds the water's tint)
+    float c = below ? osgWater_UnderwaterScale : osgWater_ReflectionScale;
+#ifdef OSGWATER_NO_REFLECTION
+    vec3 reflCol = osgWater_WaterColor; // no fetch: the reflection pass did not run
+    F = tir ? 1.0 : 0.0;
+#else
+    vec3 reflCol = owSampleProjected(osgWater_ReflectionTex, osgWater_ReflectionMVP, vec4(U + c * Rr, 1.0),
+                                     osgWater_WaterColor);
+#endif
+
+    vec3 refrCol = osgWater_WaterColor;
+#ifdef OSGWATER_NO_REFRACTION
+    F = 1.0; // no search: the refraction pass did not run
+#else
+    if (!tir) refrCol = below ? owRefractedFromBelow(U, R) : owRefractedFromAbove(U, R, debugHit);
+#endif
+    return refrCol + F * (reflCol - refrCol); // eq. 9
+}
