@@ -44,13 +44,20 @@ PassCamera::PassCamera(osg::Group* scene, osg::StateSet* sceneState, int texture
     ss->addUniform(_sunUniform.get());
     ss->setMode(GL_CLIP_PLANE0, osg::StateAttribute::ON); // == GL_CLIP_DISTANCE0
     addCausticsUniforms(ss);
+    setUnderwaterFog(ss, osg::Vec3(), 0.0f);
     ss->setDataVariance(osg::Object::DYNAMIC);
 }
 
 osg::Texture2D* osgWater::makeTargetTexture(int size, GLenum internalFormat, GLenum format, GLenum type, bool linear)
 {
+    return makeTargetTexture(size, size, internalFormat, format, type, linear);
+}
+
+osg::Texture2D* osgWater::makeTargetTexture(int width, int height, GLenum internalFormat, GLenum format, GLenum type,
+                                            bool linear)
+{
     osg::Texture2D* t = new osg::Texture2D;
-    t->setTextureSize(size, size);
+    t->setTextureSize(width, height);
     t->setInternalFormat(internalFormat);
     t->setSourceFormat(format);
     t->setSourceType(type);
@@ -64,13 +71,18 @@ osg::Texture2D* osgWater::makeTargetTexture(int size, GLenum internalFormat, GLe
 
 void osgWater::setUpPassTarget(osg::Camera* camera, int size, int order)
 {
+    setUpPassTarget(camera, size, size, order);
+}
+
+void osgWater::setUpPassTarget(osg::Camera* camera, int width, int height, int order)
+{
     camera->setRenderOrder(osg::Camera::PRE_RENDER, order);
     camera->setRenderTargetImplementation(osg::Camera::FRAME_BUFFER_OBJECT);
     camera->setReferenceFrame(osg::Camera::ABSOLUTE_RF);
     // near/far come from the scene bound (PassMath), so a depth texture's projection is known exactly
     camera->setComputeNearFarMode(osg::CullSettings::DO_NOT_COMPUTE_NEAR_FAR);
     camera->setClearMask(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    camera->setViewport(0, 0, size, size);
+    camera->setViewport(0, 0, width, height);
 }
 
 void PassCamera::setKeepPlane(const osg::Plane& localPlane)
@@ -94,6 +106,13 @@ void osgWater::addCausticsUniforms(osg::StateSet* ss)
     ss->addUniform(new osg::Uniform("osgWater_EyeToSun", osg::Matrixf()));
     ss->addUniform(new osg::Uniform("osgWater_WaterPlane", osg::Vec4f(0.0f, 0.0f, 0.0f, 1.0f)));
     ss->addUniform(new osg::Uniform("osgWater_SunDepthBias", osg::Vec2f(0.0f, 0.0f)));
+}
+
+void osgWater::setUnderwaterFog(osg::StateSet* ss, const osg::Vec3& waterColor, float k)
+{
+    const osg::Vec4f v(waterColor, k);
+    if (osg::Uniform* u = ss->getUniform("osgWater_Fog")) u->set(v);
+    else ss->addUniform(new osg::Uniform("osgWater_Fog", v));
 }
 
 void osgWater::applyCausticsLighting(osg::StateSet* ss, const CausticsLighting* c, const osg::Matrixd& view,

@@ -24,6 +24,15 @@ ViewPasses::ViewPasses(osg::Group* scene, osg::StateSet* sceneState, int reflect
     _stateSet->addUniform(new osg::Uniform("osgWater_SunEye", osg::Vec3f(0.0f, 0.0f, 1.0f)));
     _stateSet->addUniform(new osg::Uniform("osgWater_ClipPlane", osg::Vec4f(0.0f, 0.0f, 0.0f, 1.0f)));
     addCausticsUniforms(_stateSet.get());
+    setUnderwaterFog(_stateSet.get(), osg::Vec3(), 0.0f);
+}
+
+GlowPasses* ViewPasses::getOrCreateGlow(int width, int height, bool floatTargets, osg::Group* scene,
+                                        osg::StateSet* sceneState, osg::StateSet* waterState)
+{
+    if (!_glow.valid() || !_glow->matches(width, height, floatTargets))
+        _glow = new GlowPasses(scene, sceneState, waterState, width, height, floatTargets);
+    return _glow.get();
 }
 
 bool ViewPasses::matchesSizes(int reflectionSize, int refractionSize) const
@@ -61,6 +70,10 @@ void ViewPasses::update(const PassContext& ctx, bool reflection, bool refraction
     ss->getUniform("osgWater_RefractionInvProj")->set(osg::Matrixf(osg::Matrixd::inverse(rp)));
     ss->getUniform("osgWater_EyeLocal")->set(osg::Vec3f(eyePosition(ctx.view)));
     ss->getUniform("osgWater_EyeBelow")->set(ctx.eyeBelow ? 1.0f : 0.0f);
+    _eyeBelow = ctx.eyeBelow;
+    // eq. 10 in the main view: under water, every object is seen through water
+    if (ctx.eyeBelow && ctx.settings) setUnderwaterFog(ss, ctx.settings->getWaterColor(), ctx.settings->getAttenuation());
+    else setUnderwaterFog(ss, osg::Vec3(), 0.0f);
     applyCausticsLighting(ss, ctx.caustics, ctx.view, ctx.level);
     if (ctx.settings) {
         osg::Vec3f sun = osg::Matrixd::transform3x3(ctx.settings->getSunDirection(), ctx.view);

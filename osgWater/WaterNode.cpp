@@ -3,6 +3,8 @@
 #include <osgUtil/CullVisitor>
 #include <osg/ComputeBoundsVisitor>
 #include <OpenThreads/ScopedLock>
+#include <algorithm>
+#include <cmath>
 
 using namespace osgWater;
 
@@ -11,6 +13,7 @@ WaterNode::WaterNode()
       _settingsRevision(~0u), _surfaceRevision(~0u), _appliedSettings(nullptr), _appliedSurface(nullptr)
 {
     setNumChildrenRequiringUpdateTraversal(getNumChildrenRequiringUpdateTraversal() + 1);
+    _underwater = new UnderwaterView;
     refreshStates();
 }
 
@@ -22,6 +25,7 @@ WaterNode::WaterNode(const WaterNode& o, const osg::CopyOp& copyop)
       _settingsRevision(~0u), _surfaceRevision(~0u), _appliedSettings(nullptr), _appliedSurface(nullptr)
 {
     setNumChildrenRequiringUpdateTraversal(getNumChildrenRequiringUpdateTraversal() + 1);
+    _underwater = new UnderwaterView;
     refreshStates();
 }
 
@@ -69,6 +73,8 @@ void WaterNode::releaseGLObjects(osg::State* state) const
 {
     osg::Group::releaseGLObjects(state);
     if (_caustics.valid()) _caustics->releaseGLObjects(state);
+    _underwater->getCap()->releaseGLObjects(state);
+    _underwater->getBackdrop()->releaseGLObjects(state);
     if (_surface.valid()) _surface->releaseGLObjects(state);
     _states.getSceneStateSet()->releaseGLObjects(state);
     _states.getWaterStateSet()->releaseGLObjects(state);
@@ -91,17 +97,27 @@ void WaterNode::traverse(osg::NodeVisitor& nv)
     _surface->accept(nv);
 }
 
+double WaterNode::eyeHeightAboveSurface(const osg::Vec3d& eye, double t) const
+{
+    // a grid follows the waves; a user mesh is drawn as it is, about the level
+    const double h = _surface->usesGrid() ? _surface->height(eye.x(), eye.y(), t) : _surface->getLevel();
+    return eye.z() - h;
+}
+
 void WaterNode::cull(osgUtil::CullVisitor& cv)
 {
     osg::StateSet* sceneState = _states.getSceneStateSet();
     osg::Camera* camera = cv.getCurrentCamera();
     const WaterSettings& s = *_settings;
+    const double t = cv.getFrameStamp() ? cv.getFrameStamp()->getSimulationTime() : 0.0;
 
-    // 1. is the water visible at all? If not, the passes cannot change the image: draw the scene only
+    // 1. where is the eye, and is the water in view? Neither under water nor in view: the passes
+    //    cannot change the image, draw the scene only
+    const osg::Matrixd view = *cv.getModelViewMatrix();
+    const double eyeHeight = eyeHeightAboveSurface(eyePosition(view), t);
+    const bool eyeBelow = eyeHeight < 0.0;
     const bool waterVisible = camera && !cv.isCulled(_surface->getBound());
-    const bool wantReflection = s.getReflectionEnabled();
-    const bool wantRefraction = s.getRefractionEnabled();
-    if (!waterVisible) {
+    if (!camera || (!waterVisible && !eyeBelow)) {
         cv.pushStateSet(sceneState);
         cv.pushStateSet(_states.getNoCausticsStateSet());
         osg::Group::traverse(cv);
@@ -115,34 +131,66 @@ void WaterNode::cull(osgUtil::CullVisitor& cv)
 
     // 3. frame context, in the water's local frame
     PassContext ctx;
-    ctx.view = *cv.getModelViewMatrix();
+    ctx.view = view;
     ctx.projection = *cv.getProjectionMatrix();
     ctx.scene = osg::Group::computeBound();
     ctx.level = _surface->getLevel();
     ctx.clearance = _surface->getMaxAmplitude() + s.getClipOffset();
-    const double eyeHeight = eyePosition(ctx.view).z() - ctx.level;
-    ctx.eyeBelow = eyeHeight < 0.0;
+    ctx.eyeBelow = eyeBelow;
     ctx.fovExtension = s.fovExtensionAt(eyeHeight);
     ctx.clearColor = camera->getClearColor();
     ctx.settings = &s;
     // 3b. caustics: the sun's passes, once per frame for all views (before this view's passes)
     ctx.caustics = cullCaustics(cv, ctx.scene);
+    const bool reflection = waterVisible && s.getReflectionEnabled();
+    const bool refraction = waterVisible && s.getRefractionEnabled();
     passes->setTimingEnabled(_passTiming);
-    passes->update(ctx, wantReflection, wantRefraction);
+    passes->update(ctx, reflection, refraction);
 
     // 4. the passes (pre-render stages of this view)
-    if (wantReflection) passes->getReflectionCamera()->accept(cv);
-    if (wantRefraction) passes->getRefractionCamera()->accept(cv);
+    if (reflection) passes->getReflectionCamera()->accept(cv);
+    if (refraction) passes->getRefractionCamera()->accept(cv);
 
-    // 5. the scene and the water surface in the main view
+    // 5. the scene, the water surface, the near-plane cap and the underwater backdrop
     cv.pushStateSet(sceneState);
     cv.pushStateSet(passes->getStateSet());
     osg::Group::traverse(cv);
     cv.pushStateSet(_states.getWaterStateSet());
-    _surface->accept(cv);
+    if (waterVisible) _surface->accept(cv);
+    _underwater->cull(cv, waterVisible, eyeBelow);
     cv.popStateSet();
     cv.popStateSet();
     cv.popStateSet();
+
+    // 6. glow of the sun's highlight, when it can be in view
+    if (waterVisible) cullGlow(cv, passes, ctx);
+    else passes->setGlowDrawn(false);
+}
+
+void WaterNode::cullGlow(osgUtil::CullVisitor& cv, ViewPasses* passes, const PassContext& ctx)
+{
+    const osg::Viewport* vp = cv.getViewport();
+    if (!vp || !GlowPasses::highlightInView(ctx, *_surface)) {
+        passes->setGlowDrawn(false);
+        return;
+    }
+    const double f = _settings->getGlowResolution();
+    const int w = std::max(1, int(std::lround(vp->width() * f)));
+    const int h = std::max(1, int(std::lround(vp->height() * f)));
+    const bool floatTargets = support(cv.getState() ? cv.getState()->getContextID() : 0u).floatTargets;
+    GlowPasses* glow = passes->getOrCreateGlow(w, h, floatTargets, this, _states.getSceneStateSet(),
+                                               _states.getWaterStateSet());
+    glow->update(ctx, _surface.get());
+    glow->cull(cv);
+    passes->setGlowDrawn(true);
+}
+
+CausticsSupport WaterNode::support(unsigned int context)
+{
+    OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_supportMutex);
+    auto known = _support.find(context);
+    if (known == _support.end()) known = _support.emplace(context, CausticsSupport::detect(context)).first;
+    return known->second;
 }
 
 const osg::BoundingBox& WaterNode::sceneBox(const osg::BoundingSphere& bs)
@@ -177,10 +225,7 @@ const CausticsLighting* WaterNode::cullCaustics(osgUtil::CullVisitor& cv, const 
     if (_caustics.valid() && done != _causticsFrame.end() && done->second == frame)
         return &_caustics->getLighting(); // another view already rendered them this frame
 
-    auto known = _causticsSupport.find(context);
-    if (known == _causticsSupport.end())
-        known = _causticsSupport.emplace(context, CausticsSupport::detect(context)).first;
-    const CausticsSupport& support = known->second;
+    const CausticsSupport support = this->support(context);
     if (!_caustics.valid() || !_caustics->matches(s.getCausticsResolution(), s.getPhotonGridSize(), support.floatTargets))
         _caustics = new CausticsCamera(this, _states.getSceneStateSet(), _states.getWaterStateSet(),
                                        s.getCausticsResolution(), s.getPhotonGridSize(), support.floatTargets);

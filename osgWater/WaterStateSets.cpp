@@ -53,6 +53,7 @@ WaterStateSets::WaterStateSets()
     _scene->addUniform(new osg::Uniform("osgWater_SunDepth", 5));
     _noCaustics = new osg::StateSet;
     addCausticsUniforms(_noCaustics.get());
+    setUnderwaterFog(_noCaustics.get(), osg::Vec3(), 0.0f);
 
     _water = new osg::StateSet;
     _water->setName("osgWater.water");
@@ -108,6 +109,7 @@ void WaterStateSets::applySettings(const WaterSettings& s, const WaterSurface& s
     setDefine(w, "OSGWATER_ONE_STEP", s.getRefractionLookup() == WaterSettings::ONE_STEP);
     w->setDefine("OSGWATER_FRESNEL", s.getFresnelModel() == WaterSettings::FRESNEL_EXACT ? "2"
                                      : s.getFresnelModel() == WaterSettings::FRESNEL_POWER ? "1" : "0");
+    w->setDefine("OSGWATER_UNDERWATER", s.getUnderwaterModel() == WaterSettings::UNDERWATER_THESIS ? "1" : "0");
     setDefine(w, "OSGWATER_NO_REFLECTION", !s.getReflectionEnabled());
     setDefine(w, "OSGWATER_NO_REFRACTION", !s.getRefractionEnabled());
     setDefine(w, "OSGWATER_DEBUG_HIT", debug == DEBUG_BOTTOM_HIT);

@@ -14,7 +14,9 @@ std::string describeSettings(const WaterSettings& s)
                                                                  : "iterative/" + std::to_string(s.getSearchSteps()))
       << (s.getRefractionCameraRotation() ? " rotated" : "") << ", reflection " << (s.getReflectionEnabled() ? "on" : "off")
       << ", fresnel " << (s.getFresnelModel() == WaterSettings::FRESNEL_EXACT ? "exact" : s.getFresnelModel() == WaterSettings::FRESNEL_POWER ? "power" : "schlick")
-      << ", k " << s.getAttenuation() << ", tex " << s.getReflectionTextureSize();
+      << ", k " << s.getAttenuation() << ", tex " << s.getReflectionTextureSize()
+      << ", glow " << (s.getGlowEnabled() ? "on" : "off")
+      << ", underwater " << (s.getUnderwaterModel() == WaterSettings::UNDERWATER_THESIS ? "thesis" : "physical");
     return o.str();
 }
 
@@ -55,7 +57,7 @@ public:
                       c ? c->getMilliseconds() : -1.0);
         _text->setText(std::string(line) + describeSettings(*_water->getSettings()) + ", caustics " +
                        describeCaustics(*_water) +
-                       "\nkeys: r reflection  f refraction  t technique  +/- steps  m fresnel  o rotation  k caustics  g gather  s stats  arrows move");
+                       "\nkeys: r reflection  f refraction  t technique  +/- steps  m fresnel  o rotation  k caustics  g gather  u under water  n model  l glow  s stats  arrows move");
         traverse(node, nv);
     }
 

@@ -36,6 +36,10 @@ void LakeOptions::describe(osg::ApplicationUsage& u)
     u.addCommandLineOption("--caustics-size <n>", "Caustics texture size (default 256)");
     u.addCommandLineOption("--photons <n>", "Photons per side of the photon grid (default 512)");
     u.addCommandLineOption("--sun <x> <y> <z>", "Direction towards the sun");
+    u.addCommandLineOption("--underwater", "Start under water (same as pressing u)");
+    u.addCommandLineOption("--underwater-model <physical|thesis>", "Surface seen from below: Snell with total internal reflection, or the thesis's eq. 12");
+    u.addCommandLineOption("--no-glow", "Switch the sun's glow off");
+    u.addCommandLineOption("--glow <intensity>", "Glow intensity (default 1)");
     u.addCommandLineOption("--compare-caustics", "Headless: time caustics off and each gather path in one run");
 }
 
@@ -53,6 +57,11 @@ bool LakeOptions::read(osg::ArgumentParser& args)
     args.read("--center", center.x(), center.y(), center.z());
     args.read("--up", up.x(), up.y(), up.z());
     args.read("--time", time);
+    if (args.read("--underwater")) {
+        underwater = true;
+        eye = underwaterEye;
+        center = underwaterCenter;
+    }
 
     std::string s;
     float f, g, h;
@@ -87,6 +96,12 @@ bool LakeOptions::read(osg::ArgumentParser& args)
     }
     if (args.read("--caustics-size", n)) _setters.push_back([n](WaterSettings& w) { w.setCausticsResolution(n); });
     if (args.read("--photons", n)) _setters.push_back([n](WaterSettings& w) { w.setPhotonGridSize(n); });
+    if (args.read("--underwater-model", s)) {
+        if (s != "physical" && s != "thesis") { std::cerr << "error: --underwater-model physical|thesis" << std::endl; return false; }
+        _setters.push_back([s](WaterSettings& w) { w.setUnderwaterModel(s == "thesis" ? WaterSettings::UNDERWATER_THESIS : WaterSettings::UNDERWATER_PHYSICAL); });
+    }
+    if (args.read("--no-glow")) _setters.push_back([](WaterSettings& w) { w.setGlowEnabled(false); });
+    if (args.read("--glow", f)) _setters.push_back([f](WaterSettings& w) { w.setGlowIntensity(f); });
     if (args.read("--sun", f, g, h)) _setters.push_back([f, g, h](WaterSettings& w) { w.setSunDirection(osg::Vec3(f, g, h)); });
 
     for (int pos = 1; pos < args.argc(); ++pos)

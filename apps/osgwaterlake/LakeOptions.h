@@ -10,6 +10,9 @@ struct LakeOptions {
     std::string scene = "data/lake.osgt";
     int width = 1024, height = 768;
     osg::Vec3d eye{ 0, -42, 4.5 }, center{ 0, 10, -1 }, up{ 0, 0, 1 };
+    // the view under water ('u' or --underwater): 2.5 m down, looking up the slope towards the shore
+    osg::Vec3d underwaterEye{ 0, -22, -2.5 }, underwaterCenter{ 0, 0, -0.8 };
+    bool underwater = false;
     double time = 10.0;            // simulation time of the first frame
     bool headless = false;
     int frames = 60;

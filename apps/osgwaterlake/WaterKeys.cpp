@@ -15,6 +15,19 @@ bool WaterKeys::handle(const osgGA::GUIEventAdapter& ea, osgGA::GUIActionAdapter
     case 'm': s.setFresnelModel(WaterSettings::FresnelModel((int(s.getFresnelModel()) + 1) % 3)); return true;
     case 'o': s.setRefractionCameraRotation(!s.getRefractionCameraRotation()); return true;
     case 'k': s.setCausticsEnabled(!s.getCausticsEnabled()); return true;
+    case 'l': s.setGlowEnabled(!s.getGlowEnabled()); return true;
+    case 'n':
+        s.setUnderwaterModel(s.getUnderwaterModel() == WaterSettings::UNDERWATER_PHYSICAL ? WaterSettings::UNDERWATER_THESIS
+                                                                                    : WaterSettings::UNDERWATER_PHYSICAL);
+        return true;
+    case 'u': { // under water and back: to whichever view is further from where the camera is now
+        osg::ref_ptr<osgGA::CameraManipulator> m;
+        if (!_manipulator.lock(m)) return false;
+        const osg::Vec3d now = m->getMatrix().getTrans();
+        const bool goBelow = (now - _below.getTrans()).length2() > (now - _above.getTrans()).length2();
+        m->setByMatrix(goBelow ? _below : _above);
+        return true;
+    }
     case 'g': // auto -> copy -> texture -> cpu -> auto
         s.setCausticsGather(WaterSettings::CausticsGather((int(s.getCausticsGather()) + 1) % 4));
         return true;
@@ -49,5 +62,8 @@ void WaterKeys::getUsage(osg::ApplicationUsage& u) const
     u.addKeyboardMouseBinding("o", "Toggle refraction-camera rotation");
     u.addKeyboardMouseBinding("k", "Toggle caustics");
     u.addKeyboardMouseBinding("g", "Next caustics gather (auto, copy, texture, CPU)");
+    u.addKeyboardMouseBinding("u", "Go under water / back above it");
+    u.addKeyboardMouseBinding("n", "Next underwater model (physical, thesis)");
+    u.addKeyboardMouseBinding("l", "Toggle the sun's glow");
     u.addKeyboardMouseBinding("Arrows, Page Up/Down", "Move the camera");
 }

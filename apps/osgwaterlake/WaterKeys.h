@@ -3,17 +3,23 @@
 #include <osgWater/WaterNode>
 #include <osgGA/GUIEventHandler>
 #include <osgGA/FirstPersonManipulator>
+#include <osg/observer_ptr>
 
 //! Toggles water effects and techniques on key presses.
 class WaterKeys : public osgGA::GUIEventHandler
 {
 public:
     explicit WaterKeys(osgWater::WaterNode* water) : _water(water) {}
+    //! 'u' moves the camera between these two views (above the water, under it).
+    void setViews(osgGA::CameraManipulator* manipulator, const osg::Matrixd& above, const osg::Matrixd& below)
+    { _manipulator = manipulator; _above = above; _below = below; }
     bool handle(const osgGA::GUIEventAdapter& ea, osgGA::GUIActionAdapter& aa) override;
     void getUsage(osg::ApplicationUsage& usage) const override;
 
 private:
     osg::ref_ptr<osgWater::WaterNode> _water;
+    osg::observer_ptr<osgGA::CameraManipulator> _manipulator;
+    osg::Matrixd _above, _below; // camera (inverse view) matrices
 };
 
 //! Mouse look (first person) plus the arrow keys and Page Up/Down to walk.

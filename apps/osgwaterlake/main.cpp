@@ -143,7 +143,12 @@ int runWindowed(osgViewer::Viewer& viewer, osgWater::WaterNode* water, const Lak
     viewer.setCameraManipulator(manipulators.get());
     viewer.addEventHandler(new osgViewer::StatsHandler);
     viewer.addEventHandler(new osgViewer::HelpHandler(osg::ApplicationUsage::instance()));
-    viewer.addEventHandler(new WaterKeys(water));
+    osg::ref_ptr<WaterKeys> keys = new WaterKeys(water);
+    const osg::Vec3d aboveEye = o.underwater ? LakeOptions().eye : o.eye;
+    const osg::Vec3d aboveCenter = o.underwater ? LakeOptions().center : o.center;
+    keys->setViews(manipulators.get(), osg::Matrixd::inverse(osg::Matrixd::lookAt(aboveEye, aboveCenter, o.up)),
+                   osg::Matrixd::inverse(osg::Matrixd::lookAt(o.underwaterEye, o.underwaterCenter, o.up)));
+    viewer.addEventHandler(keys.get());
     osg::ref_ptr<osgViewer::ScreenCaptureHandler> capture = new osgViewer::ScreenCaptureHandler(new WriteExactly(o.screenshot));
     viewer.addEventHandler(capture.get());
     viewer.realize();

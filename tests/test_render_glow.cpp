@@ -1,0 +1,152 @@
+// Glow of the sun's highlight (thesis §9.3, issue 5): only pixels near the highlight change, nothing
+// changes with the sun behind the viewer, and the glow target follows the view's size.
+#include "GLHarness.h"
+#include <osgWater/WaterNode>
+#include <cmath>
+
+using namespace testing_gl;
+using namespace osgWater;
+
+namespace {
+
+osg::ref_ptr<WaterNode> sunnyWater(const osg::Vec3& towardsSun)
+{
+    osg::ref_ptr<WaterNode> water = new WaterNode;
+    water->getSurface()->setWaves({});
+    water->getSurface()->setSize(400.0f);
+    water->getSettings()->setCausticsEnabled(false);
+    water->getSettings()->setSunDirection(towardsSun);
+    water->addChild(checkerPlane(-2.0f, 200.0f, 1.0f));
+    return water;
+}
+
+struct Pair { osg::ref_ptr<osg::Image> off, on, highlight; bool drawn = false; };
+
+// the same frame without and with glow
+Pair renderPair(Harness& h, WaterNode* water)
+{
+    Pair p;
+    h.setScene(water);
+    h.lookAt(osg::Vec3d(0, 0, 3), osg::Vec3d(0, 10, 0), 45.0);
+    water->getSettings()->setGlowEnabled(false);
+    h.frame(1.0);
+    p.off = h.readColor();
+    water->getSettings()->setGlowEnabled(true);
+    h.frame(1.0);
+    p.on = h.readColor();
+    ViewPasses* passes = water->getViewPasses(h.camera());
+    p.drawn = passes && passes->getGlowDrawn();
+    if (p.drawn) p.highlight = h.readTexture(passes->getGlow()->getHighlightTexture());
+    return p;
+}
+
+}
+
+TEST(Glow, BlurWeightsAreANormalisedGaussian)
+{
+    std::vector<float> w = GlowPasses::blurWeights(3.0f);
+    ASSERT_EQ(w.size(), 4u); // taps -3..3, the thesis's 7x7 footprint
+    double sum = w[0];
+    for (size_t i = 1; i < w.size(); ++i) {
+        sum += 2.0 * w[i];
+        EXPECT_LT(w[i], w[i - 1]);
+    }
+    EXPECT_NEAR(sum, 1.0, 1e-6);
+    EXPECT_NEAR(w[1] / w[0], std::exp(-1.0 / (2.0 * 1.5 * 1.5)), 1e-5); // sigma = radius / 2
+    EXPECT_EQ(GlowPasses::blurWeights(0.0f), std::vector<float>{ 1.0f });
+    EXPECT_EQ(GlowPasses::blurWeights(NAN), std::vector<float>{ 1.0f });
+    EXPECT_EQ(GlowPasses::blurWeights(1e9f).size(), 33u);
+}
+
+TEST(Glow, ChangesOnlyPixelsNearTheHighlight)
+{
+    Harness h(200, 150);
+    REQUIRE_GL(h);
+    // sun 30 degrees up ahead: its mirror image lies 30 degrees below the horizon, in view
+    osg::ref_ptr<WaterNode> water = sunnyWater(osg::Vec3(0.0f, 0.866f, 0.5f));
+    Pair p = renderPair(h, water.get());
+    ASSERT_TRUE(p.drawn);
+    ASSERT_TRUE(p.highlight.valid());
+    ASSERT_TRUE(allFinite(p.on.get()));
+    EXPECT_EQ(p.highlight->s(), 50); // a quarter of the view per axis
+    EXPECT_EQ(p.highlight->t(), 38);
+
+    // hot texels of the highlight pass (above 1/1024), and how far the blur and the bilinear
+    // upsampling can carry them: (radius + 1.5) glow texels, in view pixels
+    const double scale = 200.0 / p.highlight->s();
+    const double reach = (water->getSettings()->getGlowRadius() + 1.5) * scale;
+    std::vector<osg::Vec2d> hot;
+    for (int j = 0; j < p.highlight->t(); ++j)
+        for (int i = 0; i < p.highlight->s(); ++i) {
+            const float* v = pixel(p.highlight.get(), i, j);
+            if (std::max(v[0], std::max(v[1], v[2])) > 1.0f / 1024.0f) hot.emplace_back((i + 0.5) * scale, (j + 0.5) * scale);
+        }
+    ASSERT_FALSE(hot.empty());
+    ASSERT_LT(hot.size(), size_t(p.highlight->s() * p.highlight->t() / 2)) << "a highlight, not the whole view";
+    float maxGain = 0.0f, maxFar = 0.0f, minGain = 0.0f;
+    int far = 0;
+    for (int y = 0; y < h.height(); ++y)
+        for (int x = 0; x < h.width(); ++x) {
+            double d2 = 1e30;
+            for (const osg::Vec2d& c : hot) d2 = std::min(d2, (c - osg::Vec2d(x + 0.5, y + 0.5)).length2());
+            const float* a = pixel(p.off.get(), x, y);
+            const float* b = pixel(p.on.get(), x, y);
+            for (int ch = 0; ch < 3; ++ch) {
+                const float g = b[ch] - a[ch];
+                maxGain = std::max(maxGain, g);
+                minGain = std::min(minGain, g);
+                if (d2 > reach * reach) maxFar = std::max(maxFar, std::fabs(g));
+            }
+            far += d2 > reach * reach;
+        }
+    EXPECT_GT(far, h.width() * h.height() / 2) << "most of the view is away from the highlight";
+    EXPECT_LE(maxFar, 1.0f / 255.0f) << "glow away from the highlight";
+    EXPECT_GT(maxGain, 0.2f) << "no visible glow at the highlight";
+    EXPECT_GE(minGain, -1e-6f) << "glow only adds light";
+}
+
+TEST(Glow, NothingWhenTheSunIsBehindTheViewer)
+{
+    Harness h(200, 150);
+    REQUIRE_GL(h);
+    osg::ref_ptr<WaterNode> water = sunnyWater(osg::Vec3(0.0f, -0.866f, 0.5f));
+    Pair p = renderPair(h, water.get());
+    EXPECT_FALSE(p.drawn) << "the highlight cannot be in view: no glow passes";
+    float maxDiff = 0.0f;
+    for (int y = 0; y < h.height(); ++y)
+        for (int x = 0; x < h.width(); ++x)
+            for (int ch = 0; ch < 3; ++ch)
+                maxDiff = std::max(maxDiff, std::fabs(pixel(p.on.get(), x, y)[ch] - pixel(p.off.get(), x, y)[ch]));
+    EXPECT_LE(maxDiff, 1.0f / 255.0f);
+    // under water there is no highlight to glow either
+    h.lookAt(osg::Vec3d(0, 0, -1), osg::Vec3d(0, 10, 0), 45.0);
+    water->getSettings()->setSunDirection(osg::Vec3(0.0f, 0.866f, 0.5f));
+    h.frame(1.0);
+    EXPECT_FALSE(water->getViewPasses(h.camera())->getGlowDrawn());
+}
+
+TEST(Glow, TargetFollowsTheViewportAndTheResolutionSetting)
+{
+    Harness h(200, 150);
+    REQUIRE_GL(h);
+    osg::ref_ptr<WaterNode> water = sunnyWater(osg::Vec3(0.0f, 0.866f, 0.5f));
+    h.setScene(water.get());
+    h.lookAt(osg::Vec3d(0, 0, 3), osg::Vec3d(0, 10, 0), 45.0);
+    h.frame(1.0);
+    ViewPasses* passes = water->getViewPasses(h.camera());
+    ASSERT_TRUE(passes && passes->getGlow());
+    EXPECT_EQ(passes->getGlow()->getWidth(), 50);
+    EXPECT_EQ(passes->getGlow()->getHeight(), 38);
+    h.camera()->setViewport(0, 0, 100, 80); // a resized window
+    h.frame(1.1);
+    EXPECT_EQ(passes->getGlow()->getWidth(), 25);
+    EXPECT_EQ(passes->getGlow()->getHeight(), 20);
+    water->getSettings()->setGlowResolution(0.5f);
+    h.frame(1.2);
+    EXPECT_EQ(passes->getGlow()->getWidth(), 50);
+    EXPECT_EQ(passes->getGlow()->getHeight(), 40);
+    osg::ref_ptr<osg::Image> img = h.readTexture(passes->getGlow()->getGlowTexture());
+    ASSERT_TRUE(img.valid());
+    EXPECT_EQ(img->s(), 50);
+    EXPECT_TRUE(allFinite(img.get()));
+}
