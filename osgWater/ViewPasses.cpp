@@ -20,7 +20,6 @@ ViewPasses::ViewPasses(osg::Group* scene, osg::StateSet* sceneState, int reflect
                            "osgWater_RefractionProj", "osgWater_RefractionInvProj" };
     for (const char* m : mats) _stateSet->addUniform(new osg::Uniform(m, osg::Matrixf()));
     _stateSet->addUniform(new osg::Uniform("osgWater_EyeLocal", osg::Vec3f()));
-    _stateSet->addUniform(new osg::Uniform("osgWater_EyeBelow", 0.0f));
     _stateSet->addUniform(new osg::Uniform("osgWater_SunEye", osg::Vec3f(0.0f, 0.0f, 1.0f)));
     _stateSet->addUniform(new osg::Uniform("osgWater_ClipPlane", osg::Vec4f(0.0f, 0.0f, 0.0f, 1.0f)));
     addCausticsUniforms(_stateSet.get());
@@ -69,8 +68,9 @@ void ViewPasses::update(const PassContext& ctx, bool reflection, bool refraction
     ss->getUniform("osgWater_RefractionProj")->set(osg::Matrixf(rp));
     ss->getUniform("osgWater_RefractionInvProj")->set(osg::Matrixf(osg::Matrixd::inverse(rp)));
     ss->getUniform("osgWater_EyeLocal")->set(osg::Vec3f(eyePosition(ctx.view)));
-    ss->getUniform("osgWater_EyeBelow")->set(ctx.eyeBelow ? 1.0f : 0.0f);
     _eyeBelow = ctx.eyeBelow;
+    if (ctx.eyeBelow) ss->setDefine("OSGWATER_EYE_BELOW");
+    else ss->removeDefine("OSGWATER_EYE_BELOW");
     // eq. 10 in the main view: under water, every object is seen through water
     if (ctx.eyeBelow && ctx.settings) setUnderwaterFog(ss, ctx.settings->getWaterColor(), ctx.settings->getAttenuation());
     else setUnderwaterFog(ss, osg::Vec3(), 0.0f);

@@ -67,7 +67,7 @@ WaterStateSets::WaterStateSets()
     _water->addUniform(waves.get());
     _water->addUniform(phases.get());
     const char* floats[] = { "osgWater_Level", "osgWater_Attenuation", "osgWater_FresnelQ", "osgWater_ReflectionScale",
-                             "osgWater_UnderwaterScale", "osgWater_SearchTolerance" };
+                             "osgWater_UnderwaterScale", "osgWater_SearchTolerance", "osgWater_WaveBound" };
     for (const char* f : floats) _water->addUniform(new osg::Uniform(f, 0.0f));
     _water->addUniform(new osg::Uniform("osgWater_WaveCount", 0));
     _water->addUniform(new osg::Uniform("osgWater_SearchSteps", 3));
@@ -92,6 +92,7 @@ void WaterStateSets::applySettings(const WaterSettings& s, const WaterSurface& s
     w->getUniform("osgWater_SearchTolerance")->set(s.getSearchTolerance());
     w->getUniform("osgWater_OneStep")->set(osg::Vec2f(s.getOneStepScale(), s.getOneStepMaxDepth()));
     w->getUniform("osgWater_Level")->set(float(surface.getLevel()));
+    w->getUniform("osgWater_WaveBound")->set(surface.usesGrid() ? surface.getMaxAmplitude() : 0.0f);
 
     const std::vector<Wave>& waves = surface.getWaves();
     osg::Uniform* wu = w->getUniform("osgWater_Waves");

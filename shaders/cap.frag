@@ -1,5 +1,5 @@
 #version 130
-#pragma import_defines(OSGWATER_GRID, OSGWATER_ONE_STEP, OSGWATER_FRESNEL, OSGWATER_UNDERWATER, OSGWATER_NO_REFLECTION, OSGWATER_NO_REFRACTION)
+#pragma import_defines(OSGWATER_GRID, OSGWATER_EYE_BELOW, OSGWATER_ONE_STEP, OSGWATER_FRESNEL, OSGWATER_UNDERWATER, OSGWATER_NO_REFLECTION, OSGWATER_NO_REFRACTION)
 // The near-plane cap. Where the near plane lies on the other side of the surface than the eye,
 // the eye's ray met the surface before the near plane, which clipped that bit of surface away:
 // without this the frame would show the scene behind it untinted, or the clear colour. Here the
@@ -7,6 +7,8 @@
 // and the surface is shaded at S exactly as water.frag would.
 #pragma include "waves.glsl"
 #pragma include "watershade.glsl"
+
+uniform float osgWater_WaveBound; // the sum of the wave amplitudes: |height - level| never exceeds it
 
 in vec4 vNear;
 in vec4 vFar;
@@ -24,11 +26,19 @@ void main()
 {
     if (!(abs(vNear.w) > 1e-20)) discard;
     vec3 P = vNear.xyz / vNear.w;
+#ifdef OSGWATER_EYE_BELOW
+    const bool below = true;
+#else
+    const bool below = false;
+#endif
+    // cheap test first: a near point beyond the crests (troughs) on the eye's side needs no cap,
+    // which is every pixel unless the eye is within a near-plane distance of the water
+    float dz = P.z - osgWater_Level;
+    if (below ? dz < -osgWater_WaveBound : dz > osgWater_WaveBound) discard;
     vec3 C = osgWater_EyeLocal;
-    bool below = osgWater_EyeBelow > 0.5;
     float fP = owSurfaceOffset(P);
     if (below ? fP < 0.0 : fP >= 0.0) discard; // same side as the eye: the surface itself is drawn
-    // bisection: a stays on the eye's side (the eye's side is the CPU's, from the uniform), b not
+    // bisection: a stays on the eye's side (the CPU's verdict, OSGWATER_EYE_BELOW), b on the other
     vec3 a = C, b = P;
     for (int i = 0; i < 16; ++i) {
         vec3 m = 0.5 * (a + b);

@@ -2,14 +2,14 @@
 // refraction by bottom search in the refraction pass's depth texture, reflection lookup
 // W = U + c R, depth attenuation, Fresnel, final mix (eq. 9). Shared by the surface (water.frag)
 // and the near-plane cap (cap.frag), which shades the surface where the near plane cut it away.
-// The includer lists OSGWATER_ONE_STEP, OSGWATER_FRESNEL, OSGWATER_UNDERWATER,
-// OSGWATER_NO_REFLECTION, OSGWATER_NO_REFRACTION in its import_defines.
+// The includer lists OSGWATER_EYE_BELOW, OSGWATER_ONE_STEP, OSGWATER_FRESNEL, OSGWATER_UNDERWATER,
+// OSGWATER_NO_REFLECTION, OSGWATER_NO_REFRACTION in its import_defines. The eye's side is a define
+// (set per view), not a uniform: a software rasteriser runs both sides of a branch.
 #pragma include "optics.glsl"
 
 uniform sampler2D osgWater_ReflectionTex;   // unit 1
 uniform sampler2D osgWater_RefractionTex;   // unit 2
 uniform vec3 osgWater_EyeLocal;
-uniform float osgWater_EyeBelow;            // 1.0 when the eye is under the (animated) surface
 uniform mat4 osgWater_ReflectionMVP;        // local -> reflection pass clip space
 uniform mat4 osgWater_RefractionView;       // local -> refraction pass eye space
 uniform mat4 osgWater_RefractionViewInverse;
@@ -80,7 +80,11 @@ vec3 owRefractedFromBelow(vec3 U, vec3 R)
 vec3 owShadeWater(vec3 U, vec3 Nup, vec3 E, out vec4 debugHit)
 {
     debugHit = vec4(0.0);
-    bool below = osgWater_EyeBelow > 0.5;
+#ifdef OSGWATER_EYE_BELOW
+    const bool below = true;
+#else
+    const bool below = false;
+#endif
     float n1 = below ? osgWater_IOR.y : osgWater_IOR.x; // eye side
     float n2 = below ? osgWater_IOR.x : osgWater_IOR.y;
     vec3 N = owFaceNormal(below ? -Nup : Nup, E, 1e-3);
@@ -89,10 +93,10 @@ vec3 owShadeWater(vec3 U, vec3 Nup, vec3 E, out vec4 debugHit)
     vec3 R;
     bool tir = false;
     float F;
-    if (!below) {
-        R = refract(-E, N, n1 / n2); // never zero from air into water
-        F = owFresnel(cosE, n1, n2, osgWater_FresnelQ);
-    } else {
+#ifndef OSGWATER_EYE_BELOW
+    R = refract(-E, N, n1 / n2); // never zero from air into water
+    F = owFresnel(cosE, n1, n2, osgWater_FresnelQ);
+#else
 #if defined(OSGWATER_UNDERWATER) && OSGWATER_UNDERWATER == 1
         R = (n1 / n2) * (N - E) - N; // eq. 12: never zero, no total internal reflection
         float r = (n1 - n2) / (n1 + n2);
@@ -107,7 +111,7 @@ vec3 owShadeWater(vec3 U, vec3 Nup, vec3 E, out vec4 debugHit)
         F = tir ? 1.0 : owFresnel(cosT, n1, n2, osgWater_FresnelQ); // approximations: air-side angle
 #endif
 #endif
-    }
+#endif
 
     // reflection, eq. 6 / 15 (under water the reflection pass already holds the water's tint)
     float c = below ? osgWater_UnderwaterScale : osgWater_ReflectionScale;
@@ -123,7 +127,11 @@ vec3 owShadeWater(vec3 U, vec3 Nup, vec3 E, out vec4 debugHit)
 #ifdef OSGWATER_NO_REFRACTION
     F = 1.0; // no search: the refraction pass did not run
 #else
-    if (!tir) refrCol = below ? owRefractedFromBelow(U, R) : owRefractedFromAbove(U, R, debugHit);
+#ifdef OSGWATER_EYE_BELOW
+    if (!tir) refrCol = owRefractedFromBelow(U, R);
+#else
+    refrCol = owRefractedFromAbove(U, R, debugHit);
+#endif
 #endif
     return refrCol + F * (reflCol - refrCol); // eq. 9
 }

@@ -3,6 +3,7 @@
 // water and not through deep water. Each effect is switched off once to show the check depends on it.
 #include "GLHarness.h"
 #include "../apps/osgwatergenlake/LakeModel.h"
+#include <osgWater/WaterNode>
 #include <osgDB/ReadFile>
 #include <osg/io_utils>
 #include <cmath>
@@ -156,4 +157,38 @@ TEST(LakeDemo, CausticsChangeTheShallowBedAndNothingAboveTheWater)
     ASSERT_GT(nDry, 50);
     EXPECT_LE(changedDry, 2.0 / 255.0) << "caustics changed something above the water";
     EXPECT_GT(changedBed / nBed, 0.02) << "caustics did not change the shallow bed";
+}
+
+TEST(LakeDemo, UnderwaterViewIsFiniteAndFadesWithDistance)
+{
+    // The lake from the demo's underwater view (--underwater), in a float target: every pixel finite,
+    // and eq. 10: the bed a few metres away is further from the water colour than the bed far away.
+    testing_gl::Harness h(240, 180);
+    REQUIRE_GL(h);
+    osg::ref_ptr<osgWater::WaterNode> kit = new osgWater::WaterNode; // links the kit: its osgDB wrappers
+    osg::ref_ptr<osg::Node> lake = osgDB::readRefNodeFile(OSGWATER_LAKE_SCENE);
+    ASSERT_TRUE(lake.valid()) << OSGWATER_LAKE_SCENE;
+    h.setScene(lake.get());
+    // 2 m down over the slope of the bed, looking down it towards the deep centre
+    const osg::Vec3d eye(0, -26, -2);
+    h.lookAt(eye, osg::Vec3d(0, -20, -7), 50.0);
+    h.frame(10.0);
+    h.frame(10.0 + 1.0 / 60.0);
+    osg::ref_ptr<osg::Image> img = h.readColor();
+    ASSERT_TRUE(img.valid());
+    EXPECT_TRUE(testing_gl::allFinite(img.get()));
+    const osg::Vec3 water(0.0f, 0.2f, 0.1f); // the lake's water colour (its .osgt keeps the default)
+    auto distanceToWater = [&](const osg::Vec3d& p) {
+        const osg::Vec4d c = osg::Vec4d(p, 1.0) * h.camera()->getViewMatrix() * h.camera()->getProjectionMatrix();
+        const int x = int((c.x() / c.w() * 0.5 + 0.5) * h.width()), y = int((c.y() / c.w() * 0.5 + 0.5) * h.height());
+        EXPECT_TRUE(x >= 0 && x < h.width() && y >= 0 && y < h.height()) << p << " is out of view";
+        if (!(x >= 0 && x < h.width() && y >= 0 && y < h.height())) return 0.0f;
+        const float* v = testing_gl::pixel(img.get(), x, y);
+        return (osg::Vec3(v[0], v[1], v[2]) - water).length();
+    };
+    // bed points straight ahead on the view's centre line (heights from the lake model)
+    const osg::Vec3d nearBed(0, -24, lake::height(0.0f, -24.0f)), farBed(0, -18, lake::height(0.0f, -18.0f));
+    ASSERT_LT((nearBed - eye).length(), (farBed - eye).length());
+    EXPECT_GT(distanceToWater(nearBed), distanceToWater(farBed) + 0.01f);
+    EXPECT_LT(distanceToWater(farBed), 0.05f) << "~10 m of water (k = 0.5) leave under 1% of the bed";
 }

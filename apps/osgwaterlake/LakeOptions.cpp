@@ -40,6 +40,7 @@ void LakeOptions::describe(osg::ApplicationUsage& u)
     u.addCommandLineOption("--underwater-model <physical|thesis>", "Surface seen from below: Snell with total internal reflection, or the thesis's eq. 12");
     u.addCommandLineOption("--no-glow", "Switch the sun's glow off");
     u.addCommandLineOption("--glow <intensity>", "Glow intensity (default 1)");
+    u.addCommandLineOption("--compare-glow", "Headless: time glow off and on in one run");
     u.addCommandLineOption("--compare-caustics", "Headless: time caustics off and each gather path in one run");
 }
 
@@ -50,6 +51,7 @@ bool LakeOptions::read(osg::ArgumentParser& args)
     frames = std::max(frames, 2);
     if (args.read("--no-compare")) compare = false;
     if (args.read("--compare-caustics")) compareCaustics = true;
+    if (args.read("--compare-glow")) compareGlow = true;
     if (args.read("--no-hud")) hud = false;
     args.read("--screenshot", screenshot);
     args.read("--size", width, height);

@@ -10,14 +10,15 @@ struct LakeOptions {
     std::string scene = "data/lake.osgt";
     int width = 1024, height = 768;
     osg::Vec3d eye{ 0, -42, 4.5 }, center{ 0, 10, -1 }, up{ 0, 0, 1 };
-    // the view under water ('u' or --underwater): 2.5 m down, looking up the slope towards the shore
-    osg::Vec3d underwaterEye{ 0, -22, -2.5 }, underwaterCenter{ 0, 0, -0.8 };
+    // the view under water (u or --underwater): 2 m down, looking up the slope towards the south shore
+    osg::Vec3d underwaterEye{ 0, -26, -2 }, underwaterCenter{ 0, -33, 1 };
     bool underwater = false;
     double time = 10.0;            // simulation time of the first frame
     bool headless = false;
     int frames = 60;
     bool compare = true;           // headless: also time the scene without water
     bool compareCaustics = false;  // headless: time caustics off and each gather path
+    bool compareGlow = false;      // headless: time glow off and on
     std::string screenshot = "osgwaterlake.png";
     bool hud = true;
 

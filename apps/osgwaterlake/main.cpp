@@ -66,6 +66,11 @@ std::vector<Configuration> configurations(osg::Switch* scenes, osgWater::WaterNo
             c.push_back({ std::string("water, caustics ") + osgWater::CausticsCamera::gatherName(g),
                           [=] { scenes->setSingleChildOn(0); s->setCausticsEnabled(true); s->setCausticsGather(g); }, {} });
     }
+    if (o.compareGlow) {
+        c[0].name = "water, glow off";
+        c[0].select = [=] { scenes->setSingleChildOn(0); s->setGlowEnabled(false); };
+        c.push_back({ "water, glow on", [=] { scenes->setSingleChildOn(0); s->setGlowEnabled(true); }, {} });
+    }
     if (o.compare) c.push_back({ "without water", [=] { scenes->setSingleChildOn(1); }, {} });
     return c;
 }
@@ -79,6 +84,7 @@ int runHeadless(osgViewer::Viewer& viewer, osg::Switch* scenes, osgWater::WaterN
     const osgWater::WaterSettings* s = water->getSettings();
     const bool caustics = s->getCausticsEnabled();
     const osgWater::WaterSettings::CausticsGather gather = s->getCausticsGather();
+    const bool glow = s->getGlowEnabled();
     double t = o.time;
     const double dt = 1.0 / 60.0;
     // alternating blocks, so drifts in machine load hit every configuration alike
@@ -106,6 +112,7 @@ int runHeadless(osgViewer::Viewer& viewer, osg::Switch* scenes, osgWater::WaterN
     scenes->setSingleChildOn(0); // the screenshot: the water as configured
     water->getSettings()->setCausticsEnabled(caustics);
     water->getSettings()->setCausticsGather(gather);
+    water->getSettings()->setGlowEnabled(glow);
     if (hud) hud->setNodeMask(~0u);
     osg::ref_ptr<osg::Image> image = osgWaterApps::captureFrame(viewer, o.time); // the screenshot is at the start time
     if (!image.valid() || !osgDB::writeImageFile(*image, o.screenshot)) {
@@ -120,6 +127,7 @@ int runHeadless(osgViewer::Viewer& viewer, osg::Switch* scenes, osgWater::WaterN
         const double m = osgWaterApps::median(c.ms);
         std::printf("  %-32s %8.2f ms", c.name.c_str(), m);
         if (o.compareCaustics) std::printf("   x%.3f of caustics off", first > 0 ? m / first : 0.0);
+        else if (o.compareGlow) std::printf("   x%.3f of glow off", first > 0 ? m / first : 0.0);
         else if (o.compare) std::printf("   x%.2f of without water", last > 0 ? m / last : 0.0);
         if (!c.causticsMs.empty()) std::printf("   caustics GPU %.2f ms", osgWaterApps::median(c.causticsMs));
         std::printf("\n");
