@@ -200,11 +200,18 @@ void GlowPasses::update(const PassContext& ctx, WaterSurface* surface)
     _glowState->getUniform("osgWater_GlowColor")->set(s.getSunColor());
     _glowState->getUniform("osgWater_GlowExponent")->set(s.getGlowExponent());
 
-    const std::vector<float> w = blurWeights(s.getGlowRadius());
+    if (s.getGlowRadius() != _radius) { // the weights change only with the setting
+        _radius = s.getGlowRadius();
+        setBlurWeights(blurWeights(_radius));
+    }
+    _composite->getStateSet()->getUniform("osgWater_GlowIntensity")->set(s.getGlowIntensity());
+}
+
+void GlowPasses::setBlurWeights(const std::vector<float>& w)
+{
     osg::Uniform* wu = _blurState->getUniform("osgWater_GlowWeights");
     for (int i = 0; i <= kMaxTaps; ++i) wu->setElement(i, i < int(w.size()) ? w[i] : 0.0f);
     _blurState->getUniform("osgWater_GlowTaps")->set(int(w.size()) - 1);
-    _composite->getStateSet()->getUniform("osgWater_GlowIntensity")->set(s.getGlowIntensity());
 }
 
 void GlowPasses::cull(osgUtil::CullVisitor& cv)
