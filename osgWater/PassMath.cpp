@@ -116,4 +116,36 @@ osg::Matrixd clipToTexture()
     return osg::Matrixd::translate(1.0, 1.0, 1.0) * osg::Matrixd::scale(0.5, 0.5, 0.5);
 }
 
+bool boxInsidePlanes(const osg::BoundingBox& box, const std::vector<osg::Plane>& planes)
+{
+    if (!box.valid()) return false;
+    // a corner inside every plane: done (also covers a frustum wholly inside the box's faces' reach)
+    for (unsigned int i = 0; i < 8; ++i) {
+        bool inside = true;
+        for (const osg::Plane& p : planes) inside = inside && p.distance(box.corner(i)) >= 0.0;
+        if (inside) return true;
+    }
+    // otherwise some face must cross the frustum: clip each face polygon by every plane
+    static const int faces[6][4] = { { 0, 1, 3, 2 }, { 4, 5, 7, 6 }, { 0, 1, 5, 4 },
+                                     { 2, 3, 7, 6 }, { 0, 2, 6, 4 }, { 1, 3, 7, 5 } };
+    for (const auto& f : faces) {
+        std::vector<osg::Vec3d> poly = { box.corner(f[0]), box.corner(f[1]), box.corner(f[2]), box.corner(f[3]) };
+        for (const osg::Plane& p : planes) {
+            std::vector<osg::Vec3d> out;
+            for (size_t i = 0; i < poly.size(); ++i) {
+                const osg::Vec3d& a = poly[i];
+                const osg::Vec3d& b = poly[(i + 1) % poly.size()];
+                const double da = p.distance(a), db = p.distance(b);
+                if (da >= 0.0) out.push_back(a);
+                if ((da >= 0.0) != (db >= 0.0)) out.push_back(a + (b - a) * (da / (da - db)));
+            }
+            poly.swap(out);
+            if (poly.empty()) break;
+        }
+        if (!poly.empty()) return true;
+    }
+    // the frustum wholly inside the box (no corner in it, no face crossing it): its apex is inside
+    return false;
+}
+
 }

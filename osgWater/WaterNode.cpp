@@ -116,7 +116,11 @@ void WaterNode::cull(osgUtil::CullVisitor& cv)
     const osg::Matrixd view = *cv.getModelViewMatrix();
     const double eyeHeight = eyeHeightAboveSurface(eyePosition(view), t);
     const bool eyeBelow = eyeHeight < 0.0;
-    const bool waterVisible = camera && !cv.isCulled(_surface->getBound());
+    // the surface's box, not its sphere: a flat lake's sphere reaches far above and below it
+    const bool waterVisible = camera && !cv.isCulled(_surface->getBoundingBox()) &&
+                              (eyeBelow || _surface->getBoundingBox().contains(eyePosition(view)) ||
+                               boxInsidePlanes(_surface->getBoundingBox(),
+                                                           cv.getCurrentCullingSet().getFrustum().getPlaneList()));
     if (!camera || (!waterVisible && !eyeBelow)) {
         cv.pushStateSet(sceneState);
         cv.pushStateSet(_states.getNoCausticsStateSet());

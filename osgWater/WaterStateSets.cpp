@@ -113,7 +113,8 @@ void WaterStateSets::applySettings(const WaterSettings& s, const WaterSurface& s
     w->setDefine("OSGWATER_UNDERWATER", s.getUnderwaterModel() == WaterSettings::UNDERWATER_THESIS ? "1" : "0");
     setDefine(w, "OSGWATER_NO_REFLECTION", !s.getReflectionEnabled());
     setDefine(w, "OSGWATER_NO_REFRACTION", !s.getRefractionEnabled());
-    setDefine(w, "OSGWATER_DEBUG_HIT", debug == DEBUG_BOTTOM_HIT);
+    if (debug == DEBUG_NONE) w->removeDefine("OSGWATER_DEBUG");
+    else w->setDefine("OSGWATER_DEBUG", debug == DEBUG_BOTTOM_HIT ? "1" : debug == DEBUG_REFLECTION_LOOKUP ? "2" : "3");
 }
 
 void WaterStateSets::applyTime(const WaterSurface& surface, double t)

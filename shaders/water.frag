@@ -1,5 +1,5 @@
 #version 130
-#pragma import_defines(OSGWATER_GRID, OSGWATER_EYE_BELOW, OSGWATER_ONE_STEP, OSGWATER_FRESNEL, OSGWATER_UNDERWATER, OSGWATER_NO_REFLECTION, OSGWATER_NO_REFRACTION, OSGWATER_DEBUG_HIT)
+#pragma import_defines(OSGWATER_GRID, OSGWATER_EYE_BELOW, OSGWATER_ONE_STEP, OSGWATER_FRESNEL, OSGWATER_UNDERWATER, OSGWATER_NO_REFLECTION, OSGWATER_NO_REFRACTION, OSGWATER_DEBUG)
 // The water surface (thesis ch. 7, §9.1): shaded by watershade.glsl at the fragment's point.
 // Everything is in the WaterNode's local frame (z up) unless it says eye space.
 #pragma include "waves.glsl"
@@ -19,7 +19,7 @@ void main()
 #endif
     vec4 debugHit;
     vec3 color = owShadeWater(U, N, E, debugHit);
-#ifdef OSGWATER_DEBUG_HIT
+#ifdef OSGWATER_DEBUG
     gl_FragColor = debugHit;
 #else
     gl_FragColor = vec4(color, 1.0);

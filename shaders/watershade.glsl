@@ -3,7 +3,11 @@
 // W = U + c R, depth attenuation, Fresnel, final mix (eq. 9). Shared by the surface (water.frag)
 // and the near-plane cap (cap.frag), which shades the surface where the near plane cut it away.
 // The includer lists OSGWATER_EYE_BELOW, OSGWATER_ONE_STEP, OSGWATER_FRESNEL, OSGWATER_UNDERWATER,
-// OSGWATER_NO_REFLECTION, OSGWATER_NO_REFRACTION in its import_defines. The eye's side is a define
+// OSGWATER_NO_REFLECTION, OSGWATER_NO_REFRACTION, OSGWATER_DEBUG in its import_defines.
+// Debug output (OSGWATER_DEBUG, see osgWater::DebugOutput), alpha says what rgb holds:
+//   2 a point (local frame), 3 a direction (local frame), -1 nothing found, -2 total internal reflection;
+//   1: the refraction estimate W (the point whose colour is fetched), 2: the reflection lookup
+//   point U + c R, 3: r = the Fresnel weight F. The eye's side is a define
 // (set per view), not a uniform: a software rasteriser runs both sides of a branch.
 #pragma include "optics.glsl"
 
@@ -34,7 +38,7 @@ vec3 owSampleProjected(sampler2D tex, mat4 mvp, vec4 P, vec3 fallback)
 // The refracted colour seen from above: bottom search along R (eq. 4-5).
 vec3 owRefractedFromAbove(vec3 U, vec3 R, out vec4 debugHit)
 {
-    debugHit = vec4(0.0);
+    debugHit = vec4(0.0, 0.0, 0.0, -1.0);
     vec3 u1 = (osgWater_RefractionView * vec4(U, 1.0)).xyz;
     vec3 R1 = mat3(osgWater_RefractionView) * R;
 #ifdef OSGWATER_ONE_STEP
@@ -49,17 +53,18 @@ vec3 owRefractedFromAbove(vec3 U, vec3 R, out vec4 debugHit)
         owRefractionTexCoord(hit.W, tc);
         col = texture(osgWater_RefractionTex, tc).rgb;
         d = length(hit.A - u1);
-        debugHit = vec4((osgWater_RefractionViewInverse * vec4(hit.W, 1.0)).xyz, 1.0);
+        debugHit = vec4((osgWater_RefractionViewInverse * vec4(hit.W, 1.0)).xyz, 2.0);
     }
     return osgWater_WaterColor + owAttenuation(osgWater_Attenuation, d) * (col - osgWater_WaterColor);
 }
 
 // The refracted colour seen from below (thesis §7.5): what lies along R in the air, then the
 // water between U and the eye (eq. 5 with d = |U - C1|).
-vec3 owRefractedFromBelow(vec3 U, vec3 R)
+vec3 owRefractedFromBelow(vec3 U, vec3 R, out vec4 debugHit)
 {
     mat4 mvp = osgWater_RefractionProj * osgWater_RefractionView;
 #if defined(OSGWATER_UNDERWATER) && OSGWATER_UNDERWATER == 1
+    debugHit = vec4(U + osgWater_UnderwaterScale * R, 2.0);
     vec3 col = owSampleProjected(osgWater_RefractionTex, mvp, vec4(U + osgWater_UnderwaterScale * R, 1.0),
                                  osgWater_WaterColor); // eq. 13
 #else
@@ -69,17 +74,22 @@ vec3 owRefractedFromBelow(vec3 U, vec3 R)
                                         osgWater_SearchTolerance);
     vec3 col;
     vec2 tc;
-    if (hit.valid && owRefractionTexCoord(hit.W, tc)) col = texture(osgWater_RefractionTex, tc).rgb;
-    else col = owSampleProjected(osgWater_RefractionTex, mvp, vec4(R, 0.0), osgWater_WaterColor);
+    if (hit.valid && owRefractionTexCoord(hit.W, tc)) {
+        col = texture(osgWater_RefractionTex, tc).rgb;
+        debugHit = vec4((osgWater_RefractionViewInverse * vec4(hit.W, 1.0)).xyz, 2.0);
+    } else {
+        col = owSampleProjected(osgWater_RefractionTex, mvp, vec4(R, 0.0), osgWater_WaterColor);
+        debugHit = vec4(R, 3.0);
+    }
 #endif
     float a = owAttenuation(osgWater_Attenuation, length(osgWater_EyeLocal - U));
     return osgWater_WaterColor + a * (col - osgWater_WaterColor);
 }
 
 // U: the surface point, Nup: its unit normal (up, into the air), E: unit vector towards the eye.
-vec3 owShadeWater(vec3 U, vec3 Nup, vec3 E, out vec4 debugHit)
+vec3 owShadeWater(vec3 U, vec3 Nup, vec3 E, out vec4 debugOut)
 {
-    debugHit = vec4(0.0);
+    vec4 debugHit = vec4(0.0, 0.0, 0.0, -1.0);
 #ifdef OSGWATER_EYE_BELOW
     const bool below = true;
 #else
@@ -122,16 +132,25 @@ vec3 owShadeWater(vec3 U, vec3 Nup, vec3 E, out vec4 debugHit)
     vec3 reflCol = owSampleProjected(osgWater_ReflectionTex, osgWater_ReflectionMVP, vec4(U + c * Rr, 1.0),
                                      osgWater_WaterColor);
 #endif
+    vec4 debugRefl = vec4(U + c * Rr, 2.0);
 
     vec3 refrCol = osgWater_WaterColor;
 #ifdef OSGWATER_NO_REFRACTION
     F = 1.0; // no search: the refraction pass did not run
 #else
 #ifdef OSGWATER_EYE_BELOW
-    if (!tir) refrCol = owRefractedFromBelow(U, R);
+    if (!tir) refrCol = owRefractedFromBelow(U, R, debugHit);
+    else debugHit = vec4(0.0, 0.0, 0.0, -2.0);
 #else
     refrCol = owRefractedFromAbove(U, R, debugHit);
 #endif
+#endif
+#if defined(OSGWATER_DEBUG) && OSGWATER_DEBUG == 2
+    debugOut = debugRefl;
+#elif defined(OSGWATER_DEBUG) && OSGWATER_DEBUG == 3
+    debugOut = vec4(F, 0.0, 0.0, 2.0);
+#else
+    debugOut = debugHit;
 #endif
     return refrCol + F * (reflCol - refrCol); // eq. 9
 }

@@ -1,6 +1,7 @@
 // Pass matrices, without a GPU: mirror, FOV extension, near/far, refraction-camera rotation, planes.
 #include <osgWater/PassMath>
 #include <osg/io_utils>
+#include <osg/Polytope>
 #include <gtest/gtest.h>
 #include <cmath>
 
@@ -184,4 +185,36 @@ TEST(PassMath, SunCameraEnclosesTheBoxAndLooksAlongTheSun)
     EXPECT_NEAR(lo.y(), 0.0, 2e-3);
     EXPECT_NEAR(hi.x(), 1.0, 2e-3);
     EXPECT_NEAR(hi.y(), 1.0, 2e-3);
+}
+
+namespace {
+// the view frustum's planes in the local frame, as the cull visitor holds them
+std::vector<osg::Plane> frustumPlanes(const osg::Vec3d& eye, const osg::Vec3d& center, double aspect)
+{
+    osg::Polytope p;
+    p.setToUnitFrustum(true, true);
+    p.transformProvidingInverse(lookAt(eye, center) * osg::Matrixd::perspective(45.0, aspect, 0.1, 2000.0));
+    return std::vector<osg::Plane>(p.getPlaneList().begin(), p.getPlaneList().end());
+}
+}
+
+TEST(PassMath, WaterBoxOutOfViewWhenLookingAtTheSkyFromTheShore)
+{
+    // the lake's surface box: 140 m square, waves +-0.13 m
+    const osg::BoundingBox lake(-70, -70, -0.13, 70, 70, 0.13);
+    const osg::Vec3d eye(0, -66, 6);
+    // every frustum edge points at least ~7 degrees above the horizon: nothing of the box is inside
+    EXPECT_FALSE(boxInsidePlanes(lake, frustumPlanes(eye, osg::Vec3d(0, -120, 40), 16.0 / 9.0)));
+    // yet no single plane has the whole box outside (the box reaches behind the eye): the
+    // plane-by-plane test OSG's culling does would keep it
+    osg::Polytope p;
+    p.setToUnitFrustum(true, true);
+    p.transformProvidingInverse(lookAt(eye, osg::Vec3d(0, -120, 40)) * osg::Matrixd::perspective(45.0, 16.0 / 9.0, 0.1, 2000.0));
+    EXPECT_TRUE(p.contains(lake));
+    // looking down at the water, or level across it: in view
+    EXPECT_TRUE(boxInsidePlanes(lake, frustumPlanes(eye, osg::Vec3d(0, 0, -3), 16.0 / 9.0)));
+    EXPECT_TRUE(boxInsidePlanes(lake, frustumPlanes(osg::Vec3d(0, -30, 0.3), osg::Vec3d(0, 20, 0.3), 1.0)));
+    // a frustum that sees only a corner region of a face (no box corner inside it)
+    EXPECT_TRUE(boxInsidePlanes(lake, frustumPlanes(osg::Vec3d(0, 0, 10), osg::Vec3d(0, 0, -10) + osg::Vec3d(0, 1e-3, 0), 1.0)));
+    EXPECT_FALSE(boxInsidePlanes(osg::BoundingBox(), frustumPlanes(eye, osg::Vec3d(0, 0, -3), 1.0)));
 }

@@ -1,0 +1,91 @@
+#include "BenchOptions.h"
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <iostream>
+
+namespace bench {
+
+namespace {
+
+const char* kUsage =
+    "usage: osgwaterbench --scene FILE --views FILE [--size WxH] [--out DIR] [--techniques LIST]\n"
+    "                     [--docs DIR] [--frames N] [--photons N] [--quick]\n"
+    "  --scene FILE       .osgt/.osgb with an osgWater::WaterNode, or any model (water added at z = 0)\n"
+    "  --views FILE       one view per line: ex ey ez cx cy cz ux uy uz [t] [# name]\n"
+    "  --size WxH         viewport (default 1280x720)\n"
+    "  --out DIR          results.json and results.csv go here (default bench-out)\n"
+    "  --techniques LIST  comma-separated technique names, or all (default)\n"
+    "  --docs DIR         also regenerate DIR/BENCHMARKS.md and DIR/benchmark-speed-error.png\n"
+    "  --frames N         timed frames per technique and view (default 30, at least 30)\n"
+    "  --photons N        photons of the caustics reference (default 4000000)\n"
+    "  --quick            smoke run: 96x64, first view, default and one-step, 3 frames, 20000 photons\n";
+
+bool number(const char* s, double& out)
+{
+    char* end = nullptr;
+    out = std::strtod(s, &end);
+    return end != s && *end == '\0' && std::isfinite(out);
+}
+
+}
+
+bool BenchOptions::read(int argc, char** argv, std::string& error)
+{
+    bool sizeGiven = false, framesGiven = false, photonsGiven = false;
+    for (int i = 0; i < argc; ++i) commandLine += (i ? " " : "") + std::string(i ? argv[i] : "osgwaterbench");
+    for (int i = 1; i < argc; ++i) {
+        const std::string a = argv[i];
+        auto value = [&](std::string& out) {
+            if (i + 1 >= argc) { error = a + " needs a value"; return false; }
+            out = argv[++i];
+            return true;
+        };
+        std::string v;
+        double x = 0.0;
+        if (a == "-h" || a == "--help") { std::cout << kUsage; help = true; return true; }
+        else if (a == "--quick") quick = true;
+        else if (a == "--scene") { if (!value(scene)) return false; }
+        else if (a == "--views") { if (!value(viewsFile)) return false; }
+        else if (a == "--out") { if (!value(out)) return false; }
+        else if (a == "--docs") { if (!value(docs)) return false; }
+        else if (a == "--techniques") { if (!value(techniques)) return false; }
+        else if (a == "--size") {
+            if (!value(v)) return false;
+            if (std::sscanf(v.c_str(), "%dx%d", &width, &height) != 2 || width < 1 || height < 1 || width > 8192 || height > 8192) {
+                error = "--size " + v + ": expected WxH with 1..8192 pixels per side";
+                return false;
+            }
+            sizeGiven = true;
+        } else if (a == "--frames") {
+            if (!value(v)) return false;
+            if (!number(v.c_str(), x) || x < 1 || x > 100000) { error = "--frames " + v + ": expected 1..100000"; return false; }
+            frames = int(x);
+            framesGiven = true;
+        } else if (a == "--photons") {
+            if (!value(v)) return false;
+            if (!number(v.c_str(), x) || x < 1 || x > 1e10) { error = "--photons " + v + ": expected 1..1e10"; return false; }
+            photons = size_t(x);
+            photonsGiven = true;
+        } else {
+            error = "unknown option " + a + "\n" + kUsage;
+            return false;
+        }
+    }
+    if (scene.empty() || viewsFile.empty()) {
+        error = std::string("--scene and --views are required\n") + kUsage;
+        return false;
+    }
+    if (quick) {
+        if (!sizeGiven) { width = 96; height = 64; }
+        if (!framesGiven) frames = 3;
+        if (!photonsGiven) photons = 20000;
+        if (techniques.empty()) techniques = "default,one-step";
+    } else if (frames < 30) {
+        std::cerr << "warning: --frames " << frames << " is below 30; using 30 (medians need them)" << std::endl;
+        frames = 30;
+    }
+    return true;
+}
+
+}

@@ -1,0 +1,151 @@
+#include "Metrics.h"
+#include <glm/geometric.hpp>
+#include <glm/vec2.hpp>
+#include <algorithm>
+#include <cmath>
+
+namespace bench {
+
+Quantiles quantiles(std::vector<float>& v)
+{
+    Quantiles q;
+    q.n = v.size();
+    if (v.empty()) return q;
+    std::sort(v.begin(), v.end());
+    auto at = [&](double f) { return double(v[size_t(std::floor(f * (v.size() - 1) + 0.5))]); };
+    q.median = v.size() % 2 ? v[v.size() / 2] : 0.5 * (double(v[v.size() / 2 - 1]) + v[v.size() / 2]);
+    q.p95 = at(0.95);
+    q.p99 = at(0.99);
+    q.max = v.back();
+    q.over2 = double(v.end() - std::upper_bound(v.begin(), v.end(), 2.0f)) / double(v.size());
+    return q;
+}
+
+namespace {
+
+const osg::Vec4f& px(const osg::Image* img, int x, int y) { return *reinterpret_cast<const osg::Vec4f*>(img->data(x, y)); }
+bool finite(const osg::Vec4f& v) { return std::isfinite(v.x()) && std::isfinite(v.y()) && std::isfinite(v.z()) && std::isfinite(v.w()); }
+
+// clip space -> texel coordinates of a square target (w = 0: a direction)
+bool texel(const osg::Matrixd& mvp, const osg::Vec4d& p, int size, osg::Vec2d& out)
+{
+    const osg::Vec4d c = p * mvp;
+    if (!(c.w() > 1e-9)) return false;
+    out.set((c.x() / c.w() * 0.5 + 0.5) * size, (c.y() / c.w() * 0.5 + 0.5) * size);
+    return std::isfinite(out.x()) && std::isfinite(out.y());
+}
+
+}
+
+size_t countNonFinite(const osg::Image* img)
+{
+    size_t n = 0;
+    if (!img) return 0;
+    for (int y = 0; y < img->t(); ++y)
+        for (int x = 0; x < img->s(); ++x) n += !finite(px(img, x, y));
+    return n;
+}
+
+bool shownPoint(const osg::Vec4f& est, const Estimate& e, const RayCaster& scene, glm::dvec3& out)
+{
+    const osg::Vec3d c = osg::Matrixd::inverse(e.refractionView).getTrans();
+    const glm::dvec3 C(c.x(), c.y(), c.z());
+    glm::dvec3 dir;
+    if (est.w() > 1.5f && est.w() < 2.5f) dir = glm::dvec3(est.x(), est.y(), est.z()) - C;
+    else if (est.w() > 2.5f && est.w() < 3.5f) dir = glm::dvec3(est.x(), est.y(), est.z());
+    else return false;
+    if (!(glm::length(dir) > 1e-9)) return false;
+    dir = glm::normalize(dir);
+    // the pass keeps one side of its clip plane: start the ray where it enters that side
+    const double plane = e.eyeBelow ? e.level - e.clearance : e.level + e.clearance;
+    double t0 = 0.0;
+    const bool inside = e.eyeBelow ? C.z >= plane : C.z <= plane;
+    if (!inside) {
+        if (std::fabs(dir.z) < 1e-12 || (e.eyeBelow ? dir.z < 0.0 : dir.z > 0.0)) return false;
+        t0 = (plane - C.z) / dir.z;
+    }
+    const Hit h = scene.intersect(C, dir, t0);
+    if (!h.hit) return false;
+    out = h.point;
+    return true;
+}
+
+ViewErrors measureView(const ReferenceImage& ref, const Estimate& e, const RayCaster& scene)
+{
+    ViewErrors v;
+    for (const osg::Image* img : { e.color.get(), e.bottom.get(), e.reflection.get(), e.fresnel.get() })
+        if (img) v.nanPixels += countNonFinite(img);
+    v.waterPixels = ref.waterPixels;
+    for (int y = 0; y < ref.height; ++y)
+        for (int x = 0; x < ref.width; ++x) {
+            const PixelRef& r = ref.at(x, y);
+            if (!(r.flags & PixelRef::WATER)) continue;
+            const osg::Vec4f b = e.bottom.valid() ? px(e.bottom.get(), x, y) : osg::Vec4f();
+            // the render's water covers this pixel when a debug estimate (alpha < 0 or > 1.5) is there
+            const bool covered = e.bottom.valid() && (b.w() < -0.5f || b.w() > 1.5f);
+            if (e.bottom.valid() && !covered) { ++v.coverageMismatch; continue; }
+            if (e.fresnel.valid()) {
+                const osg::Vec4f f = px(e.fresnel.get(), x, y);
+                if (f.w() > 1.5f && std::isfinite(f.x())) v.fresnel.push_back(std::fabs(f.x() - r.fresnel));
+            }
+            if (e.reflection.valid()) {
+                const osg::Vec4f l = px(e.reflection.get(), x, y);
+                osg::Vec2d est, exact;
+                const osg::Vec4d target = (r.flags & PixelRef::REFLECTED_HIT) ? osg::Vec4d(r.Y.x, r.Y.y, r.Y.z, 1.0)
+                                                                              : osg::Vec4d(r.Y.x, r.Y.y, r.Y.z, 0.0);
+                if (l.w() > 1.5f && texel(e.reflectionMVP, osg::Vec4d(l.x(), l.y(), l.z(), 1.0), e.reflectionSize, est) &&
+                    texel(e.reflectionMVP, target, e.reflectionSize, exact))
+                    v.reflectionTexels.push_back(float((est - exact).length()));
+            }
+            if (!e.bottom.valid()) continue;
+            const bool tirRef = r.flags & PixelRef::TIR, tirEst = b.w() < -1.5f;
+            if (tirRef != tirEst) { ++v.tirMismatch; continue; }
+            if (tirRef || !(r.flags & PixelRef::REFRACTED_HIT)) continue;
+            glm::dvec3 S;
+            if (!shownPoint(b, e, scene, S)) { ++v.misses; continue; }
+            const glm::dvec3 d = S - glm::dvec3(r.X);
+            v.refractionM.push_back(float(glm::length(d)));
+            if (r.flags & PixelRef::JACOBIAN) {
+                const glm::dvec2 p(glm::dot(glm::dvec3(r.pixelsPerMetre[0]), d), glm::dot(glm::dvec3(r.pixelsPerMetre[1]), d));
+                v.refractionPx.push_back(float(glm::length(p)));
+            }
+        }
+    return v;
+}
+
+CausticsErrors measureCaustics(const PhotonImage& ref, const osg::Image* img, int block)
+{
+    CausticsErrors c;
+    if (!img || img->s() != ref.resolution || img->t() != ref.resolution || block < 1) return c;
+    const int n = ref.resolution / block;
+    double sumSq = 0.0, sumRef = 0.0, sumGpu = 0.0, noise = 0.0;
+    size_t count = 0;
+    const double perPhoton = double(ref.resolution) * ref.resolution / double(ref.photons);
+    for (int by = 0; by < n; ++by)
+        for (int bx = 0; bx < n; ++bx) {
+            double r = 0.0, g = 0.0;
+            for (int y = by * block; y < (by + 1) * block; ++y)
+                for (int x = bx * block; x < (bx + 1) * block; ++x) {
+                    r += ref.value[size_t(y) * ref.resolution + x];
+                    g += px(img, x, y).x();
+                }
+            r /= block * block;
+            g /= block * block;
+            if (!(r > 0.0) && !(g > 0.0)) continue;
+            if (!std::isfinite(g)) g = 1e9;
+            sumSq += (g - r) * (g - r);
+            sumRef += r;
+            sumGpu += g;
+            noise += r * perPhoton / (block * block); // Poisson: variance of a block mean ~ value x photon weight / texels
+            ++count;
+        }
+    if (!count || !(sumRef > 0.0)) return c;
+    c.valid = true;
+    c.meanReference = sumRef / count;
+    c.meanRendered = sumGpu / count;
+    c.relativeRmse = std::sqrt(sumSq / count) / c.meanReference;
+    c.referenceNoise = std::sqrt(noise / count) / c.meanReference;
+    return c;
+}
+
+}

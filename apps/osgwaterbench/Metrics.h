@@ -1,0 +1,59 @@
+// Error of the renderer's per-pixel estimates (debug outputs read back from float targets)
+// against the exact reference, and of its caustics texture against photon tracing.
+#pragma once
+#include "PhotonTracer.h"
+#include "Reference.h"
+#include <osg/Image>
+#include <osg/Matrixd>
+#include <limits>
+#include <vector>
+
+namespace bench {
+
+struct Quantiles {
+    size_t n = 0;
+    double median = std::numeric_limits<double>::quiet_NaN(), p95 = median, p99 = median, max = median;
+    double over2 = median; //!< share of values above 2
+};
+//! Quantiles of v (sorted in place); NaN fields when v is empty.
+Quantiles quantiles(std::vector<float>& v);
+
+//! What the renderer estimated for one view (read back after a frame of each debug output).
+struct Estimate {
+    osg::ref_ptr<osg::Image> color, bottom, reflection, fresnel; //!< float RGBA, the view's size
+    osg::Matrixd refractionView;       //!< local -> refraction pass eye space
+    bool eyeBelow = false;
+    double level = 0.0, clearance = 0.0; //!< the refraction pass keeps z <= level + clearance (above) or >= level - clearance
+    osg::Matrixd reflectionMVP;        //!< local -> reflection pass clip space
+    int reflectionSize = 512;
+};
+
+struct ViewErrors {
+    std::vector<float> refractionPx;     //!< apparent-position error of the refracted point, screen pixels
+    std::vector<float> refractionM;      //!< the same in metres
+    std::vector<float> reflectionTexels; //!< reflection lookup vs the mirror ray's hit, reflection texels
+    std::vector<float> fresnel;          //!< |F - exact|
+    size_t waterPixels = 0;              //!< reference: pixels whose eye ray meets the water first
+    size_t misses = 0;                   //!< reference refracted ray hits, the renderer found nothing
+    size_t tirMismatch = 0;              //!< total internal reflection in one and not the other
+    size_t coverageMismatch = 0;         //!< water in the reference but not in the render (silhouettes)
+    size_t nanPixels = 0;                //!< pixels with a NaN or Inf in any read-back output
+};
+
+//! The scene point the refraction texture shows for a debug estimate (a = 2 a point, 3 a
+//! direction): the refraction camera's ray through it, beyond the pass's clip plane.
+bool shownPoint(const osg::Vec4f& estimate, const Estimate& e, const RayCaster& scene, glm::dvec3& out);
+
+ViewErrors measureView(const ReferenceImage& ref, const Estimate& e, const RayCaster& scene);
+size_t countNonFinite(const osg::Image* img);
+
+struct CausticsErrors {
+    bool valid = false;
+    double relativeRmse = std::numeric_limits<double>::quiet_NaN();
+    double referenceNoise = relativeRmse; //!< expected relative RMSE of the reference alone (photon counting)
+    double meanReference = relativeRmse, meanRendered = relativeRmse;
+};
+//! Both images summed over blocks x blocks texels, RMSE over blocks that either lights, / mean reference.
+CausticsErrors measureCaustics(const PhotonImage& reference, const osg::Image* rendered, int block);
+
+}

@@ -1,0 +1,93 @@
+#include "PhotonTracer.h"
+#include <osgWater/WaterSurface>
+#include <glm/geometric.hpp>
+#include <atomic>
+#include <cmath>
+#include <cstdio>
+#include <mutex>
+#include <thread>
+
+namespace bench {
+
+namespace {
+
+// splitmix64: a small deterministic generator, the same on every library
+struct Rng {
+    uint64_t s;
+    double next()
+    {
+        uint64_t z = (s += 0x9e3779b97f4a7c15ull);
+        z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+        z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+        return double((z ^ (z >> 31)) >> 11) * (1.0 / 9007199254740992.0);
+    }
+};
+
+// rows of photons done out of all rows; every row holds `perRow` photons
+void progressBar(size_t done, size_t total, size_t perRow)
+{
+    const int width = 40, filled = int(double(done) / double(total) * width);
+    std::fprintf(stderr, "\r  photons [%.*s%*s] %3d%% of %zu", filled, "########################################",
+                 width - filled, "", int(100.0 * done / total), total * perRow);
+    if (done == total) std::fprintf(stderr, "\n");
+    std::fflush(stderr);
+}
+
+}
+
+PhotonImage tracePhotons(const RayCaster& scene, const RayCaster& water, const osgWater::WaterSurface& surface,
+                         double t, const osg::Matrixd& localToSun, const osg::Vec3d& towardsSun,
+                         const PhotonSettings& s)
+{
+    PhotonImage out;
+    out.resolution = s.resolution;
+    const size_t side = std::max<size_t>(1, size_t(std::ceil(std::sqrt(double(s.photons)))));
+    out.photons = side * side;
+    out.value.assign(size_t(s.resolution) * s.resolution, 0.0f);
+    const osg::Matrixd sunToLocal = osg::Matrixd::inverse(localToSun);
+    const glm::dvec3 L = glm::normalize(glm::dvec3(towardsSun.x(), towardsSun.y(), towardsSun.z()));
+    const double weight = double(s.resolution) * s.resolution / double(out.photons);
+    std::mutex merge;
+    std::atomic<size_t> rowsDone{ 0 };
+    auto work = [&](size_t r0, size_t r1, unsigned seed) {
+        std::vector<double> acc(out.value.size(), 0.0);
+        Rng rng{ seed * 0x12345ull + 7 };
+        for (size_t r = r0; r < r1; ++r) {
+            for (size_t c = 0; c < side; ++c) {
+                const double u = (c + rng.next()) / side, v = (r + rng.next()) / side;
+                const osg::Vec3d o = osg::Vec3d(u, v, 0.0) * sunToLocal; // on the sun camera's near plane
+                const glm::dvec3 org(o.x(), o.y(), o.z());
+                const Hit w = water.intersect(org, -L);
+                if (!w.hit) continue;
+                glm::dvec3 N(0, 0, 1);
+                if (surface.usesGrid()) {
+                    const osg::Vec3d n = surface.normal(w.point.x, w.point.y, t);
+                    N = glm::normalize(glm::dvec3(n.x(), n.y(), n.z()));
+                } else if (w.normal.z < 0.0) N = -w.normal; else N = w.normal;
+                if (glm::dot(N, L) <= 0.0) continue; // the sun behind this facet
+                glm::dvec3 T;
+                if (!snell(-L, N, s.media.air, s.media.water, T)) continue;
+                const Hit b = scene.intersect(w.point, T, 1e-6 * (1.0 + w.t));
+                if (!b.hit) continue;
+                const double energy = (1.0 - fresnelExact(glm::dot(N, L), s.media.air, s.media.water)) *
+                                      std::exp(-s.attenuation * b.t);
+                const osg::Vec3d tex = osg::Vec3d(b.point.x, b.point.y, b.point.z) * localToSun;
+                const int i = int(std::floor(tex.x() * s.resolution)), j = int(std::floor(tex.y() * s.resolution));
+                if (i < 0 || j < 0 || i >= s.resolution || j >= s.resolution) continue;
+                acc[size_t(j) * s.resolution + i] += energy * weight;
+            }
+            const size_t done = ++rowsDone;
+            if (s.progress && seed == 0 && (done % std::max<size_t>(1, side / 50) == 0)) progressBar(done, side, side);
+        }
+        std::lock_guard<std::mutex> lock(merge);
+        for (size_t i = 0; i < acc.size(); ++i) out.value[i] += float(acc[i]);
+    };
+    const unsigned threads = std::max(1u, std::min(8u, std::thread::hardware_concurrency()));
+    std::vector<std::thread> pool;
+    for (unsigned i = 0; i < threads; ++i) pool.emplace_back(work, side * i / threads, side * (i + 1) / threads, i);
+    for (std::thread& th : pool) th.join();
+    if (s.progress) progressBar(side, side, side);
+    return out;
+}
+
+}

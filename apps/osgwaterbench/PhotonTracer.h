@@ -1,0 +1,34 @@
+// Caustics reference by forward photon tracing (thesis ch. 8, done exactly): photons leave the
+// sun's window uniformly (jittered strata), refract at the water surface by Snell with exact
+// Fresnel transmission, lose exp(-k d) on the way to what they hit below, and land in the texel of
+// the caustics texture that the scene shader would read at that point. The result is in the
+// texture's units: irradiance per area seen from the sun, in units of the sun's irradiance.
+#pragma once
+#include "Reference.h"
+#include <osg/Matrixd>
+#include <cstddef>
+#include <vector>
+
+namespace bench {
+
+struct PhotonSettings {
+    size_t photons = 4000000;
+    int resolution = 512;         //!< caustics texture size
+    double attenuation = 0.0;     //!< k per metre
+    Media media;
+    bool progress = true;         //!< a progress bar on stderr
+};
+
+struct PhotonImage {
+    int resolution = 0;
+    size_t photons = 0;           //!< photons traced
+    std::vector<float> value;     //!< resolution^2, row 0 at v = 0
+};
+
+//! localToSun: the water's local frame -> the sun camera's texture space [0,1]^3 (the matrix the
+//! scene shader uses); towardsSun: unit vector to the sun, local frame.
+PhotonImage tracePhotons(const RayCaster& scene, const RayCaster& water, const osgWater::WaterSurface& surface,
+                         double t, const osg::Matrixd& localToSun, const osg::Vec3d& towardsSun,
+                         const PhotonSettings& settings);
+
+}

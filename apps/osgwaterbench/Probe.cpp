@@ -1,0 +1,127 @@
+#include "Probe.h"
+#include "../common/FrameTimer.h"
+#include <osg/GL>
+
+namespace bench {
+
+namespace {
+
+osg::Texture2D* floatTarget(int width, int height)
+{
+    osg::Texture2D* t = new osg::Texture2D;
+    t->setTextureSize(width, height);
+    t->setInternalFormat(GL_RGBA32F_ARB);
+    t->setSourceFormat(GL_RGBA);
+    t->setSourceType(GL_FLOAT);
+    t->setFilter(osg::Texture::MIN_FILTER, osg::Texture::NEAREST);
+    t->setFilter(osg::Texture::MAG_FILTER, osg::Texture::NEAREST);
+    return t;
+}
+
+}
+
+Probe::Probe(osgViewer::Viewer* shared) : _viewer(shared), _shared(true)
+{
+    _gc = shared->getCamera()->getGraphicsContext();
+    const osg::Viewport* vp = shared->getCamera()->getViewport();
+    if (!_gc.valid() || !vp) {
+        _why = "the viewer has no context";
+        return;
+    }
+    _target = floatTarget(int(vp->width()), int(vp->height()));
+}
+
+Probe::Probe(int width, int height)
+{
+    _gc = osgWaterApps::createPbuffer(width, height);
+    if (!_gc.valid()) {
+        _why = "cannot create an off-screen (pbuffer) GL context; run under xvfb-run on a machine without a display";
+        return;
+    }
+    _owned = new osgViewer::Viewer;
+    _viewer = _owned.get();
+    _viewer->setThreadingModel(osgViewer::ViewerBase::SingleThreaded);
+    _viewer->setReleaseContextAtEndOfFrameHint(false);
+    osg::Camera* cam = _viewer->getCamera();
+    cam->setGraphicsContext(_gc.get());
+    cam->setViewport(0, 0, width, height);
+    cam->setRenderTargetImplementation(osg::Camera::FRAME_BUFFER_OBJECT);
+    _target = floatTarget(width, height);
+    cam->attach(osg::Camera::COLOR_BUFFER, _target.get());
+    cam->attach(osg::Camera::DEPTH_BUFFER, GL_DEPTH_COMPONENT24);
+    cam->setProjectionMatrixAsPerspective(45.0, double(width) / double(height), 0.1, 2000.0);
+}
+
+osg::ref_ptr<osg::Image> Probe::read(osg::Texture2D* texture)
+{
+    _gc->makeCurrent(); // stays current: the viewer does not release it between frames
+    osg::Texture::TextureObject* to = texture ? texture->getTextureObject(_gc->getState()->getContextID()) : nullptr;
+    if (!to) return nullptr;
+    osg::ref_ptr<osg::Image> img = new osg::Image;
+    img->allocateImage(texture->getTextureWidth(), texture->getTextureHeight(), 1, GL_RGBA, GL_FLOAT);
+    GLint bound = 0; // restored: osg::State believes it is still bound
+    glGetIntegerv(GL_TEXTURE_BINDING_2D, &bound);
+    glBindTexture(GL_TEXTURE_2D, to->id());
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_FLOAT, img->data());
+    glBindTexture(GL_TEXTURE_2D, GLuint(bound));
+    return img;
+}
+
+Estimate Probe::capture(osgWater::WaterNode& water, double t)
+{
+    Estimate e;
+    osg::ref_ptr<osg::Texture> saved;
+    if (_shared) {
+        auto it = camera()->getBufferAttachmentMap().find(osg::Camera::COLOR_BUFFER);
+        if (it != camera()->getBufferAttachmentMap().end()) saved = it->second._texture;
+        camera()->attach(osg::Camera::COLOR_BUFFER, _target.get());
+        camera()->dirtyAttachmentMap(); // the FBO is remade on the next frame
+    }
+    const osgWater::DebugOutput before = water.getDebugOutput();
+    water.setDebugOutput(osgWater::DEBUG_NONE);
+    _gc->makeCurrent(); // another viewer's context may be current
+    _viewer->frame(t);
+    _viewer->frame(t); // settle: passes sized and caustics chosen on the first frame
+    e.color = read(_target.get());
+    water.setDebugOutput(osgWater::DEBUG_BOTTOM_HIT);
+    _viewer->frame(t);
+    e.bottom = read(_target.get());
+    water.setDebugOutput(osgWater::DEBUG_REFLECTION_LOOKUP);
+    _viewer->frame(t);
+    e.reflection = read(_target.get());
+    water.setDebugOutput(osgWater::DEBUG_FRESNEL);
+    _viewer->frame(t);
+    e.fresnel = read(_target.get());
+    water.setDebugOutput(before);
+    if (saved.valid()) {
+        camera()->attach(osg::Camera::COLOR_BUFFER, saved.get());
+        camera()->dirtyAttachmentMap();
+    }
+
+    e.level = water.getSurface()->getLevel();
+    e.clearance = water.getSurface()->getMaxAmplitude() + water.getSettings()->getClipOffset();
+    if (osgWater::ViewPasses* p = water.getViewPasses(camera())) {
+        e.eyeBelow = p->getEyeBelow();
+        e.refractionView = p->getRefractionCamera()->getViewMatrix();
+        e.reflectionMVP = p->getReflectionCamera()->getViewProjection();
+        auto it = p->getReflectionCamera()->getBufferAttachmentMap().find(osg::Camera::COLOR_BUFFER);
+        if (it != p->getReflectionCamera()->getBufferAttachmentMap().end() && it->second._texture.valid())
+            e.reflectionSize = it->second._texture->getTextureWidth();
+    }
+    return e;
+}
+
+osg::ref_ptr<osg::Image> Probe::readCaustics(osgWater::WaterNode& water)
+{
+    osgWater::CausticsCamera* c = water.getCausticsCamera();
+    if (!c || !water.getSettings()->getCausticsEnabled()) return nullptr;
+    osg::ref_ptr<osg::Image> img = read(c->getCausticsTexture());
+    const float scale = c->getGather()->getValueScale(); // 16-bit targets store value / scale
+    if (img.valid() && scale != 1.0f)
+        for (int y = 0; y < img->t(); ++y)
+            for (int x = 0; x < img->s(); ++x) reinterpret_cast<float*>(img->data(x, y))[0] *= scale;
+    return img;
+}
+
+}

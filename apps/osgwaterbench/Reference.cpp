@@ -1,0 +1,151 @@
+#include "Reference.h"
+#include <osgWater/WaterSurface>
+#include <glm/geometric.hpp>
+#include <glm/mat2x2.hpp>
+#include <algorithm>
+#include <cmath>
+#include <thread>
+
+namespace bench {
+
+bool snell(const glm::dvec3& d, const glm::dvec3& n, double n1, double n2, glm::dvec3& out)
+{
+    const double eta = n1 / n2, cosI = -glm::dot(d, n);
+    const double k = 1.0 - eta * eta * (1.0 - cosI * cosI);
+    if (k < 0.0) return false;
+    out = glm::normalize(eta * d + (eta * cosI - std::sqrt(k)) * n);
+    return true;
+}
+
+double fresnelExact(double cosI, double n1, double n2)
+{
+    cosI = std::min(std::max(cosI, 0.0), 1.0);
+    const double sinT = n1 / n2 * std::sqrt(std::max(0.0, 1.0 - cosI * cosI));
+    if (sinT >= 1.0) return 1.0;
+    const double cosT = std::sqrt(1.0 - sinT * sinT);
+    const double rs = (n1 * cosI - n2 * cosT) / (n1 * cosI + n2 * cosT);
+    const double rp = (n2 * cosI - n1 * cosT) / (n2 * cosI + n1 * cosT);
+    return 0.5 * (rs * rs + rp * rp);
+}
+
+Reference::Reference(const RayCaster& scene, const RayCaster& water, const osgWater::WaterSurface& surface, double t,
+                     Media media)
+    : _scene(scene), _water(water), _surface(surface), _t(t), _media(media)
+{
+}
+
+bool Reference::eyeBelow(const glm::dvec3& e) const
+{
+    const double h = _surface.usesGrid() ? _surface.height(e.x, e.y, _t) : _surface.getLevel();
+    return e.z < h;
+}
+
+glm::dvec3 Reference::normalAt(const Hit& h) const
+{
+    if (_surface.usesGrid()) { // the analytic normal the fragment shader evaluates at U
+        const osg::Vec3d n = _surface.normal(h.point.x, h.point.y, _t);
+        return glm::normalize(glm::dvec3(n.x(), n.y(), n.z()));
+    }
+    return h.normal.z < 0.0 ? -h.normal : h.normal;
+}
+
+PixelTrace Reference::trace(const glm::dvec3& eye, const glm::dvec3& dir) const
+{
+    PixelTrace p;
+    const Hit w = _water.intersect(eye, dir);
+    if (!w.hit) return p;
+    const Hit s = _scene.intersect(eye, dir, 0.0, w.t);
+    if (s.hit && s.t < w.t) return p; // something in front of the water
+    p.water = true;
+    p.below = eyeBelow(eye);
+    p.U = w.point;
+    const double n1 = p.below ? _media.water : _media.air, n2 = p.below ? _media.air : _media.water;
+    glm::dvec3 N = normalAt(w);
+    if (p.below) N = -N;
+    if (glm::dot(N, dir) > 0.0) N = -N; // the ray met a side the analytic normal turns away from
+    p.N = N;
+    p.Rr = glm::reflect(dir, N);
+    const double cosI = -glm::dot(dir, N);
+    p.fresnel = fresnelExact(cosI, n1, n2);
+    p.tir = !snell(dir, N, n1, n2, p.R);
+    const double eps = 1e-6 * (1.0 + w.t);
+    if (!p.tir) p.refracted = _scene.intersect(p.U, p.R, eps);
+    p.reflected = _scene.intersect(p.U, p.Rr, eps);
+    p.underwaterPath = p.below ? w.t : (p.refracted.hit ? p.refracted.t : 0.0);
+    return p;
+}
+
+namespace {
+
+glm::dvec3 toGlm(const osg::Vec3d& v) { return glm::dvec3(v.x(), v.y(), v.z()); }
+
+// metres -> pixels: least-squares inverse of the 3x2 Jacobian [dX/dx dX/dy]
+bool pseudoInverse(const glm::dvec3& jx, const glm::dvec3& jy, glm::mat2x3& out)
+{
+    const double a = glm::dot(jx, jx), b = glm::dot(jx, jy), d = glm::dot(jy, jy);
+    const double det = a * d - b * b;
+    if (!(det > 1e-4 * a * d) || !(a > 0.0) || !(d > 0.0)) return false;
+    // (J^T J)^-1 J^T: row 0 = (d jx - b jy) / det, row 1 = (a jy - b jx) / det
+    const glm::dvec3 r0 = (d * jx - b * jy) / det, r1 = (a * jy - b * jx) / det;
+    // glm::mat2x3 has 2 columns of 3: store the rows as columns (apply with dot products)
+    out[0] = glm::vec3(r0);
+    out[1] = glm::vec3(r1);
+    return true;
+}
+
+}
+
+ReferenceImage traceView(const Reference& ref, const osg::Matrixd& viewMatrix, const osg::Matrixd& projection,
+                         int width, int height)
+{
+    ReferenceImage img;
+    img.width = width;
+    img.height = height;
+    img.pixels.resize(size_t(width) * height);
+    std::vector<PixelTrace> full(size_t(width) * height);
+    const osg::Matrixd inv = osg::Matrixd::inverse(viewMatrix * projection);
+    const glm::dvec3 eye = toGlm(osg::Matrixd::inverse(viewMatrix).getTrans());
+    auto rows = [&](int y0, int y1) {
+        for (int y = y0; y < y1; ++y)
+            for (int x = 0; x < width; ++x) {
+                const double nx = (x + 0.5) / width * 2.0 - 1.0, ny = (y + 0.5) / height * 2.0 - 1.0;
+                const glm::dvec3 dir = glm::normalize(toGlm(osg::Vec3d(nx, ny, 1.0) * inv) - toGlm(osg::Vec3d(nx, ny, -1.0) * inv));
+                full[size_t(y) * width + x] = ref.trace(eye, dir);
+            }
+    };
+    const int threads = std::max(1u, std::min(8u, std::thread::hardware_concurrency()));
+    std::vector<std::thread> pool;
+    for (int i = 0; i < threads; ++i) pool.emplace_back(rows, height * i / threads, height * (i + 1) / threads);
+    for (std::thread& th : pool) th.join();
+
+    auto hitOk = [&](int x, int y, const Hit& h0) {
+        if (x < 0 || y < 0 || x >= width || y >= height) return false;
+        const PixelTrace& q = full[size_t(y) * width + x];
+        // a neighbour on the same smooth surface (normals within ~25 deg), else an edge
+        return q.water && q.refracted.hit && std::fabs(glm::dot(q.refracted.normal, h0.normal)) > 0.9;
+    };
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) {
+            const PixelTrace& p = full[size_t(y) * width + x];
+            PixelRef& r = img.pixels[size_t(y) * width + x];
+            if (!p.water) continue;
+            ++img.waterPixels;
+            r.flags = PixelRef::WATER | (p.below ? PixelRef::BELOW : 0) | (p.tir ? PixelRef::TIR : 0);
+            r.U = glm::vec3(p.U);
+            r.fresnel = float(p.fresnel);
+            r.Y = glm::vec3(p.reflected.hit ? p.reflected.point : p.Rr);
+            if (p.reflected.hit) r.flags |= PixelRef::REFLECTED_HIT;
+            if (!p.refracted.hit) continue;
+            r.flags |= PixelRef::REFRACTED_HIT;
+            r.X = glm::vec3(p.refracted.point);
+            const int sx = hitOk(x + 1, y, p.refracted) ? 1 : hitOk(x - 1, y, p.refracted) ? -1 : 0;
+            const int sy = hitOk(x, y + 1, p.refracted) ? 1 : hitOk(x, y - 1, p.refracted) ? -1 : 0;
+            if (!sx || !sy) continue;
+            const glm::dvec3 jx = (full[size_t(y) * width + x + sx].refracted.point - p.refracted.point) * double(sx);
+            const glm::dvec3 jy = (full[size_t(y + sy) * width + x].refracted.point - p.refracted.point) * double(sy);
+            if (pseudoInverse(jx, jy, r.pixelsPerMetre)) r.flags |= PixelRef::JACOBIAN;
+        }
+    return img;
+}
+
+}

@@ -1,0 +1,78 @@
+// The exact reference of one view (thesis and DESIGN §5): per pixel, the eye ray's hit on the
+// water, Snell's refracted ray and its hit, the mirror ray and its hit, exact unpolarised Fresnel
+// and the path length under water; from below with the indices swapped and total internal
+// reflection. Everything in the water's local frame, in double precision per ray.
+#pragma once
+#include "RayCaster.h"
+#include <osg/Matrixd>
+#include <glm/mat2x3.hpp>
+#include <cstdint>
+
+namespace osgWater { class WaterSurface; }
+
+namespace bench {
+
+//! Indices of refraction of the two media.
+struct Media {
+    double air = 1.0, water = 1.333;
+};
+
+//! Snell's refracted direction of unit d at unit normal n facing against d (dot(d, n) < 0), from
+//! index n1 into n2; false under total internal reflection.
+bool snell(const glm::dvec3& d, const glm::dvec3& n, double n1, double n2, glm::dvec3& out);
+//! Exact unpolarised Fresnel reflectance for incidence cosine cosI from n1 into n2 (1 under TIR).
+double fresnelExact(double cosI, double n1, double n2);
+
+//! One pixel's reference, in double precision.
+struct PixelTrace {
+    bool water = false;      //!< the eye ray meets the water surface before anything else
+    bool below = false;      //!< the eye is under water
+    bool tir = false;        //!< total internal reflection (from below)
+    glm::dvec3 U{ 0.0 }, N{ 0.0 }; //!< surface point, unit normal facing the eye
+    glm::dvec3 R{ 0.0 }, Rr{ 0.0 }; //!< refracted and mirrored directions
+    Hit refracted, reflected;
+    double fresnel = 0.0;
+    double underwaterPath = 0.0; //!< from above: |X - U|; from below: |eye - U|
+};
+
+class Reference
+{
+public:
+    Reference(const RayCaster& scene, const RayCaster& water, const osgWater::WaterSurface& surface, double t,
+              Media media);
+    //! Whether an eye at this point is under the water (the wave height at its own x, y).
+    bool eyeBelow(const glm::dvec3& eye) const;
+    //! The reference for the ray eye + s dir (dir unit).
+    PixelTrace trace(const glm::dvec3& eye, const glm::dvec3& dir) const;
+    const RayCaster& scene() const { return _scene; }
+
+private:
+    glm::dvec3 normalAt(const Hit& h) const;
+    const RayCaster& _scene;
+    const RayCaster& _water;
+    const osgWater::WaterSurface& _surface;
+    double _t;
+    Media _media;
+};
+
+//! A view's reference, compact, per pixel (row 0 at the bottom, as GL reads back).
+struct PixelRef {
+    enum : uint8_t { WATER = 1, BELOW = 2, TIR = 4, REFRACTED_HIT = 8, REFLECTED_HIT = 16, JACOBIAN = 32 };
+    uint8_t flags = 0;
+    glm::vec3 U{ 0.0f }, X{ 0.0f }, Y{ 0.0f }; //!< Y: the mirror ray's hit, or its direction on a miss
+    float fresnel = 0.0f;
+    glm::mat2x3 pixelsPerMetre{ 0.0f };       //!< least-squares inverse of dX/d(pixel): metres -> pixels
+};
+
+struct ReferenceImage {
+    int width = 0, height = 0;
+    std::vector<PixelRef> pixels;
+    size_t waterPixels = 0;
+    const PixelRef& at(int x, int y) const { return pixels[size_t(y) * width + x]; }
+};
+
+//! Traces every pixel centre of a width x height view (viewMatrix, projection: local frame -> clip).
+ReferenceImage traceView(const Reference& ref, const osg::Matrixd& viewMatrix, const osg::Matrixd& projection,
+                         int width, int height);
+
+}

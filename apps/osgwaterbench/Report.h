@@ -1,0 +1,45 @@
+// The benchmark's outputs: results.json (a list of records), results.csv, and the generated
+// docs (BENCHMARKS.md with the targets, per-technique and per-view tables, and a gnuplot PNG).
+#pragma once
+#include "Metrics.h"
+#include <string>
+#include <vector>
+
+namespace bench {
+
+struct Record {
+    std::string technique, view, lookup, fresnel, caustics;
+    int steps = 0, textureSize = 0;
+    bool rotation = true, glow = true, eyeBelow = false;
+    double t = 0.0;
+    double frameMs = 0.0, plainMs = 0.0, ratio = 0.0;
+    size_t waterPixels = 0, misses = 0, tirMismatch = 0, coverageMismatch = 0, nanPixels = 0;
+    Quantiles refractionPx, refractionM, reflectionTexels, fresnelError;
+    CausticsErrors causticsErrors;
+};
+
+//! Pooled over every view of one technique.
+struct Summary {
+    std::string technique;
+    double ratioInView = 0.0;   //!< median over views with water in view and the eye above it
+    double frameMs = 0.0;       //!< median over the same views
+    Quantiles refractionPx, refractionM, reflectionTexels, fresnel; //!< every pixel of every view
+    double causticsRmse = std::numeric_limits<double>::quiet_NaN(), causticsNoise = causticsRmse;
+    size_t nanPixels = 0;
+};
+
+struct RunInfo {
+    std::string command, scene, viewsFile, renderer, date;
+    int width = 0, height = 0, frames = 0;
+    size_t photons = 0;
+    unsigned int cpus = 0;
+    bool quick = false;
+};
+
+bool writeJson(const std::string& file, const std::vector<Record>& records, std::string& error);
+bool writeCsv(const std::string& file, const std::vector<Record>& records, std::string& error);
+//! BENCHMARKS.md and its plot (PNG via gnuplot; without gnuplot the page says the plot is missing).
+bool writeDocs(const std::string& dir, const RunInfo& info, const std::vector<Record>& records,
+               const std::vector<Summary>& summaries, std::string& error);
+
+}

@@ -1,0 +1,93 @@
+#include "Techniques.h"
+#include <utility>
+#include <sstream>
+
+namespace bench {
+
+using osgWater::WaterSettings;
+
+std::vector<Technique> allTechniques()
+{
+    std::vector<Technique> t;
+    t.push_back({ "default", [](WaterSettings&) {} });
+    t.push_back({ "one-step", [](WaterSettings& s) { s.setRefractionLookup(WaterSettings::ONE_STEP); } });
+    for (int steps = 1; steps <= 8; ++steps)
+        t.push_back({ "iterative-" + std::to_string(steps), [steps](WaterSettings& s) {
+                         s.setRefractionLookup(WaterSettings::ITERATIVE);
+                         s.setSearchSteps(steps);
+                     } });
+    t.push_back({ "no-rotation", [](WaterSettings& s) { s.setRefractionCameraRotation(false); } });
+    for (int size : { 256, 1024 })
+        t.push_back({ "texture-" + std::to_string(size), [size](WaterSettings& s) {
+                         s.setReflectionTextureSize(size);
+                         s.setRefractionTextureSize(size);
+                     } });
+    t.push_back({ "fresnel-schlick", [](WaterSettings& s) { s.setFresnelModel(WaterSettings::FRESNEL_SCHLICK); } });
+    t.push_back({ "fresnel-power", [](WaterSettings& s) { s.setFresnelModel(WaterSettings::FRESNEL_POWER); } });
+    t.push_back({ "fresnel-exact", [](WaterSettings& s) { s.setFresnelModel(WaterSettings::FRESNEL_EXACT); } });
+    t.push_back({ "caustics-off", [](WaterSettings& s) { s.setCausticsEnabled(false); } });
+    const std::pair<const char*, WaterSettings::CausticsGather> gathers[] = {
+        { "caustics-cpu", WaterSettings::GATHER_CPU },
+        { "caustics-points-copy", WaterSettings::GATHER_POINTS_COPY },
+        { "caustics-points-texture", WaterSettings::GATHER_POINTS_TEXTURE } };
+    for (const auto& [name, g] : gathers)
+        t.push_back({ name, [g = g](WaterSettings& s) {
+                         s.setCausticsEnabled(true);
+                         s.setCausticsGather(g);
+                     } });
+    t.push_back({ "glow-off", [](WaterSettings& s) { s.setGlowEnabled(false); } });
+    t.push_back({ "underwater-thesis", [](WaterSettings& s) { s.setUnderwaterModel(WaterSettings::UNDERWATER_THESIS); } });
+    return t;
+}
+
+bool selectTechniques(const std::string& list, std::vector<Technique>& out, std::string& error)
+{
+    const std::vector<Technique> all = allTechniques();
+    out.clear();
+    if (list.empty() || list == "all") {
+        out = all;
+        return true;
+    }
+    std::istringstream in(list);
+    std::string name;
+    while (std::getline(in, name, ',')) {
+        if (name.empty()) continue;
+        bool found = false;
+        for (const Technique& t : all)
+            if (t.name == name) { out.push_back(t); found = true; }
+        if (!found) {
+            error = "unknown technique '" + name + "'; known:";
+            for (const Technique& t : all) error += " " + t.name;
+            return false;
+        }
+    }
+    if (out.empty()) error = "no techniques selected";
+    return !out.empty();
+}
+
+std::string lookupName(const WaterSettings& s)
+{
+    return s.getRefractionLookup() == WaterSettings::ONE_STEP ? "one-step" : "iterative";
+}
+
+std::string fresnelName(const WaterSettings& s)
+{
+    switch (s.getFresnelModel()) {
+    case WaterSettings::FRESNEL_POWER: return "power";
+    case WaterSettings::FRESNEL_EXACT: return "exact";
+    default: return "schlick";
+    }
+}
+
+std::string causticsName(const WaterSettings& s)
+{
+    if (!s.getCausticsEnabled()) return "off";
+    switch (s.getCausticsGather()) {
+    case WaterSettings::GATHER_CPU: return "cpu";
+    case WaterSettings::GATHER_POINTS_COPY: return "points-copy";
+    case WaterSettings::GATHER_POINTS_TEXTURE: return "points-texture";
+    default: return "auto";
+    }
+}
+
+}

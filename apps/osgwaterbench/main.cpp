@@ -1,0 +1,316 @@
+// osgwaterbench: speed against error. For every technique and view: the frame time beside the
+// plain scene's (water removed) in the same run, and the error of the renderer's per-pixel
+// estimates against an exact Embree reference (refraction, reflection, Fresnel) and of its
+// caustics against photon tracing. Writes results.json / results.csv and, with --docs, the
+// generated BENCHMARKS.md and its plot.
+#include "BenchOptions.h"
+#include "Probe.h"
+#include "Report.h"
+#include "Techniques.h"
+#include "Views.h"
+#include "../common/FrameTimer.h"
+#include <osgDB/FileUtils>
+#include <osgDB/ReadFile>
+#include <osg/GL>
+#include <osg/Switch>
+#include <osg/Timer>
+#include <chrono>
+#include <cstdio>
+#include <ctime>
+#include <thread>
+#include <iostream>
+#include <map>
+#include <memory>
+#include <glm/geometric.hpp>
+
+using namespace bench;
+
+namespace {
+
+class FindWater : public osg::NodeVisitor
+{
+public:
+    FindWater() : osg::NodeVisitor(TRAVERSE_ALL_CHILDREN) {}
+    void apply(osg::Group& g) override
+    {
+        if (!found) found = dynamic_cast<osgWater::WaterNode*>(&g);
+        if (!found) traverse(g);
+    }
+    osgWater::WaterNode* found = nullptr;
+};
+
+// Loads an .osgt with a WaterNode, or any model with water added at z = 0 over its extent.
+osg::ref_ptr<osgWater::WaterNode> loadScene(const std::string& file, osg::ref_ptr<osg::Node>& root)
+{
+    root = osgDB::readRefNodeFile(file);
+    if (!root.valid()) return nullptr;
+    FindWater find;
+    root->accept(find);
+    osg::ref_ptr<osgWater::WaterNode> water = find.found;
+    if (!water.valid()) {
+        std::cout << file << " has no osgWater::WaterNode: adding water at z = 0" << std::endl;
+        water = new osgWater::WaterNode;
+        const osg::BoundingSphere b = root->getBound();
+        water->getSurface()->setSize(float(2.0 * b.radius()));
+        water->getSurface()->setCenter(osg::Vec2(b.center().x(), b.center().y()));
+        water->addChild(root.get());
+        root = water;
+    }
+    return water;
+}
+
+std::string today()
+{
+    const std::time_t now = std::time(nullptr);
+    char buf[32];
+    std::strftime(buf, sizeof buf, "%Y-%m-%d", std::localtime(&now));
+    return buf;
+}
+
+// frame times of `frames` frames after `warmup`, advancing time like an animation
+std::vector<double> timeFrames(osgViewer::Viewer& viewer, double& t, int warmup, int frames)
+{
+    std::vector<double> ms;
+    for (int i = 0; i < warmup + frames; ++i) {
+        const osg::Timer_t t0 = osg::Timer::instance()->tick();
+        viewer.frame(t);
+        t += 1.0 / 60.0;
+        if (i >= warmup) ms.push_back(osg::Timer::instance()->delta_m(t0, osg::Timer::instance()->tick()));
+    }
+    return ms;
+}
+
+Summary summarize(const std::string& name, const std::vector<Record>& records, std::vector<ViewErrors>& errors)
+{
+    Summary s;
+    s.technique = name;
+    std::vector<double> ratios, frames, caustics, noise;
+    std::vector<float> px, m, refl, fres;
+    for (size_t i = 0; i < records.size(); ++i) {
+        const Record& r = records[i];
+        if (r.technique != name) continue;
+        if (r.waterPixels > 0 && !r.eyeBelow) {
+            ratios.push_back(r.ratio);
+            frames.push_back(r.frameMs);
+        }
+        if (r.causticsErrors.valid) {
+            caustics.push_back(r.causticsErrors.relativeRmse);
+            noise.push_back(r.causticsErrors.referenceNoise);
+        }
+        s.nanPixels += r.nanPixels;
+        px.insert(px.end(), errors[i].refractionPx.begin(), errors[i].refractionPx.end());
+        m.insert(m.end(), errors[i].refractionM.begin(), errors[i].refractionM.end());
+        refl.insert(refl.end(), errors[i].reflectionTexels.begin(), errors[i].reflectionTexels.end());
+        fres.insert(fres.end(), errors[i].fresnel.begin(), errors[i].fresnel.end());
+        errors[i] = ViewErrors(); // pooled: free the per-pixel values
+    }
+    s.ratioInView = ratios.empty() ? std::numeric_limits<double>::quiet_NaN() : osgWaterApps::median(ratios);
+    s.frameMs = frames.empty() ? std::numeric_limits<double>::quiet_NaN() : osgWaterApps::median(frames);
+    if (!caustics.empty()) {
+        s.causticsRmse = osgWaterApps::median(caustics);
+        s.causticsNoise = osgWaterApps::median(noise);
+    }
+    s.refractionPx = quantiles(px);
+    s.refractionM = quantiles(m);
+    s.reflectionTexels = quantiles(refl);
+    s.fresnel = quantiles(fres);
+    return s;
+}
+
+}
+
+int main(int argc, char** argv)
+{
+    BenchOptions o;
+    std::string error;
+    if (!o.read(argc, argv, error)) {
+        std::cerr << "error: " << error << std::endl;
+        return 2;
+    }
+    if (o.help) return 0;
+    std::vector<View> views;
+    if (!readViews(o.viewsFile, views, error)) {
+        std::cerr << "error: " << error << std::endl;
+        return 2;
+    }
+    if (o.quick) views.resize(1);
+    std::vector<Technique> techniques;
+    if (!selectTechniques(o.techniques, techniques, error)) {
+        std::cerr << "error: " << error << std::endl;
+        return 2;
+    }
+    if (!osgDB::fileExists(o.scene)) {
+        std::cerr << "error: scene file " << o.scene << " not found" << std::endl;
+        return 2;
+    }
+    osg::ref_ptr<osg::Node> loaded;
+    osg::ref_ptr<osgWater::WaterNode> water = loadScene(o.scene, loaded);
+    if (!water.valid()) {
+        std::cerr << "error: could not read " << o.scene << std::endl;
+        return 2;
+    }
+    if (!osgDB::makeDirectory(o.out)) {
+        std::cerr << "error: cannot create the output folder " << o.out << std::endl;
+        return 2;
+    }
+
+    // the water scene and the plain one (the same children, no water) behind one switch
+    osg::ref_ptr<osg::Group> plain = new osg::Group;
+    for (unsigned i = 0; i < water->getNumChildren(); ++i) plain->addChild(water->getChild(i));
+    osg::ref_ptr<osg::Switch> scenes = new osg::Switch;
+    scenes->addChild(loaded.get(), true);
+    scenes->addChild(plain.get(), false);
+
+    // timing: the demo's headless set-up (8-bit target, glFinish at the end of each frame)
+    osgViewer::Viewer timing;
+    if (!osgWaterApps::setUpViewer(timing, true, o.width, o.height)) return 1;
+    timing.getCamera()->setFinalDrawCallback(new osgWaterApps::FinishFrame);
+    timing.getCamera()->setClearColor(osg::Vec4(0.55f, 0.7f, 0.9f, 1.0f));
+    timing.setSceneData(scenes.get());
+    // errors: the same viewer with a float target while the debug outputs are read
+    Probe probe(&timing);
+    if (!probe.ok()) {
+        std::cerr << "error: " << probe.why() << std::endl;
+        return 1;
+    }
+
+    RunInfo info;
+    info.command = o.commandLine;
+    info.scene = o.scene;
+    info.viewsFile = o.viewsFile;
+    info.width = o.width;
+    info.height = o.height;
+    info.frames = o.frames;
+    info.photons = o.photons;
+    info.quick = o.quick;
+    info.date = today();
+    info.cpus = std::thread::hardware_concurrency();
+
+    // settle: proxies loaded, programs linked, the caustics' automatic gather chosen
+    double t = views[0].t;
+    timing.getCamera()->setViewMatrixAsLookAt(views[0].eye, views[0].center, views[0].up);
+    timeFrames(timing, t, o.quick ? 2 : 30, 0);
+    if (const GLubyte* r = glGetString(GL_RENDERER)) info.renderer = reinterpret_cast<const char*>(r);
+
+    const osg::ref_ptr<osgWater::WaterSettings> base =
+        new osgWater::WaterSettings(*water->getSettings(), osg::CopyOp::DEEP_COPY_ALL);
+    const Media media{ base->getAirIOR(), base->getWaterIOR() };
+    const RayCaster sceneCaster(collectScene(*water));
+    std::cout << "reference: " << sceneCaster.size() << " scene triangles" << std::endl;
+    std::map<double, std::unique_ptr<RayCaster>> waterCasters;
+    std::vector<ReferenceImage> references(views.size());
+    std::map<double, PhotonImage> photonImages;
+    osgWater::WaterSurface* surface = water->getSurface();
+    for (const View& v : views)
+        if (!waterCasters.count(v.t)) waterCasters[v.t] = std::make_unique<RayCaster>(collectWater(*surface, v.t));
+    std::cout << "reference: " << waterCasters.begin()->second->size() << " water triangles" << std::endl;
+
+    std::vector<Record> records;
+    std::vector<ViewErrors> errors;
+    std::vector<Summary> summaries;
+    for (const Technique& tech : techniques) {
+        osg::ref_ptr<osgWater::WaterSettings> s = new osgWater::WaterSettings(*base, osg::CopyOp::DEEP_COPY_ALL);
+        tech.apply(*s);
+        water->setSettings(s.get());
+        for (size_t vi = 0; vi < views.size(); ++vi) {
+            const View& v = views[vi];
+            Record r;
+            r.technique = tech.name;
+            r.view = v.name;
+            r.t = v.t;
+            r.lookup = lookupName(*s);
+            r.steps = s->getRefractionLookup() == osgWater::WaterSettings::ONE_STEP ? 1 : s->getSearchSteps();
+            r.textureSize = s->getRefractionTextureSize();
+            r.rotation = s->getRefractionCameraRotation();
+            r.fresnel = fresnelName(*s);
+            r.caustics = causticsName(*s);
+            r.glow = s->getGlowEnabled();
+
+            // speed: plain, water, plain again, side by side
+            timing.getCamera()->setViewMatrixAsLookAt(v.eye, v.center, v.up);
+            double tt = v.t;
+            const int plainFrames = std::max(o.frames / 3, 3);
+            scenes->setSingleChildOn(1);
+            std::vector<double> plainMs = timeFrames(timing, tt, 2, plainFrames);
+            scenes->setSingleChildOn(0);
+            const std::vector<double> waterMs = timeFrames(timing, tt, 3, o.frames);
+            scenes->setSingleChildOn(1);
+            const std::vector<double> after = timeFrames(timing, tt, 2, plainFrames);
+            plainMs.insert(plainMs.end(), after.begin(), after.end());
+            scenes->setSingleChildOn(0);
+            r.frameMs = osgWaterApps::median(waterMs);
+            r.plainMs = osgWaterApps::median(plainMs);
+            r.ratio = r.plainMs > 0.0 ? r.frameMs / r.plainMs : 0.0;
+
+            // error: the estimates against the reference
+            const Estimate e = probe.capture(*water, v.t);
+            const RayCaster& waterCaster = *waterCasters[v.t];
+            const Reference reference(sceneCaster, waterCaster, *surface, v.t, media);
+            if (references[vi].pixels.empty())
+                references[vi] = traceView(reference, probe.camera()->getViewMatrix(), probe.camera()->getProjectionMatrix(),
+                                           o.width, o.height);
+            if (std::getenv("BENCH_DEBUG")) {
+                const osg::Matrixd inv = osg::Matrixd::inverse(probe.camera()->getViewMatrix() * probe.camera()->getProjectionMatrix());
+                osg::Vec3d a = osg::Vec3d(0, 0, -1) * inv, b = osg::Vec3d(0, 0, 1) * inv;
+                glm::dvec3 d = glm::normalize(glm::dvec3(b.x() - a.x(), b.y() - a.y(), b.z() - a.z()));
+                Hit hw = waterCaster.intersect(glm::dvec3(v.eye.x(), v.eye.y(), v.eye.z()), d);
+                Hit hs = sceneCaster.intersect(glm::dvec3(v.eye.x(), v.eye.y(), v.eye.z()), d);
+                std::printf("dbg images %d %d %d %d\n", e.color.valid(), e.bottom.valid(), e.reflection.valid(), e.fresnel.valid());
+                std::printf("dbg dir %f %f %f water %d %f scene %d %f (%f %f %f)\n", d.x, d.y, d.z, hw.hit, hw.t, hs.hit, hs.t, hs.point.x, hs.point.y, hs.point.z);
+            }
+            r.eyeBelow = reference.eyeBelow(glm::dvec3(v.eye.x(), v.eye.y(), v.eye.z()));
+            ViewErrors ve = measureView(references[vi], e, sceneCaster);
+            r.waterPixels = ve.waterPixels;
+            r.misses = ve.misses;
+            r.tirMismatch = ve.tirMismatch;
+            r.coverageMismatch = ve.coverageMismatch;
+            r.nanPixels = ve.nanPixels;
+            {
+                std::vector<float> a = ve.refractionPx, b = ve.refractionM, c = ve.reflectionTexels, d = ve.fresnel;
+                r.refractionPx = quantiles(a);
+                r.refractionM = quantiles(b);
+                r.reflectionTexels = quantiles(c);
+                r.fresnelError = quantiles(d);
+            }
+            if (osg::ref_ptr<osg::Image> caustics = probe.readCaustics(*water)) {
+                r.nanPixels += countNonFinite(caustics.get());
+                const osgWater::CausticsCamera* cc = water->getCausticsCamera();
+                auto it = photonImages.find(v.t);
+                if (it == photonImages.end()) {
+                    PhotonSettings ps;
+                    ps.photons = o.photons;
+                    ps.resolution = cc->getResolution();
+                    ps.attenuation = base->getAttenuation();
+                    ps.media = media;
+                    ps.progress = !o.quick;
+                    std::cout << "caustics reference at t = " << v.t << " s:" << std::endl;
+                    it = photonImages.emplace(v.t, tracePhotons(sceneCaster, waterCaster, *surface, v.t,
+                                                                cc->getLighting().localToSun, base->getSunDirection(), ps)).first;
+                }
+                r.causticsErrors = measureCaustics(it->second, caustics.get(), std::max(1, cc->getResolution() / 128));
+            }
+            std::printf("%-24s %-28s %8.1f ms  plain %6.1f ms  x%.2f  refraction px median %.3f p99 %.2f  NaN %zu\n",
+                        tech.name.c_str(), v.name.c_str(), r.frameMs, r.plainMs, r.ratio, r.refractionPx.median,
+                        r.refractionPx.p99, r.nanPixels);
+            std::fflush(stdout);
+            records.push_back(r);
+            errors.push_back(std::move(ve));
+        }
+        summaries.push_back(summarize(tech.name, records, errors));
+    }
+    water->setSettings(new osgWater::WaterSettings(*base, osg::CopyOp::DEEP_COPY_ALL));
+
+    if (!writeJson(o.out + "/results.json", records, error) || !writeCsv(o.out + "/results.csv", records, error)) {
+        std::cerr << "error: " << error << std::endl;
+        return 1;
+    }
+    std::cout << "wrote " << o.out << "/results.json and results.csv (" << records.size() << " records)" << std::endl;
+    if (!o.docs.empty()) {
+        if (!osgDB::makeDirectory(o.docs) || !writeDocs(o.docs, info, records, summaries, error)) {
+            std::cerr << "error: " << error << std::endl;
+            return 1;
+        }
+        std::cout << "wrote " << o.docs << "/BENCHMARKS.md" << std::endl;
+    }
+    return 0;
+}
