@@ -226,6 +226,7 @@ int main(int argc, char** argv)
             r.caustics = causticsName(*s);
             r.glow = s->getGlowEnabled();
 
+            const osg::Timer_t start = osg::Timer::instance()->tick();
             // speed: plain, water, plain again, side by side
             timing.getCamera()->setViewMatrixAsLookAt(v.eye, v.center, v.up);
             double tt = v.t;
@@ -242,6 +243,7 @@ int main(int argc, char** argv)
             r.plainMs = osgWaterApps::median(plainMs);
             r.ratio = r.plainMs > 0.0 ? r.frameMs / r.plainMs : 0.0;
 
+            const osg::Timer_t phase = osg::Timer::instance()->tick();
             // error: the estimates against the reference
             const Estimate e = probe.capture(*water, v.t);
             const RayCaster& waterCaster = *waterCasters[v.t];
@@ -258,6 +260,7 @@ int main(int argc, char** argv)
                 std::printf("dbg images %d %d %d %d\n", e.color.valid(), e.bottom.valid(), e.reflection.valid(), e.fresnel.valid());
                 std::printf("dbg dir %f %f %f water %d %f scene %d %f (%f %f %f)\n", d.x, d.y, d.z, hw.hit, hw.t, hs.hit, hs.t, hs.point.x, hs.point.y, hs.point.z);
             }
+            const double captureAndTraceS = osg::Timer::instance()->delta_s(phase, osg::Timer::instance()->tick());
             r.eyeBelow = reference.eyeBelow(glm::dvec3(v.eye.x(), v.eye.y(), v.eye.z()));
             ViewErrors ve = measureView(references[vi], e, sceneCaster);
             r.waterPixels = ve.waterPixels;
@@ -289,9 +292,11 @@ int main(int argc, char** argv)
                 }
                 r.causticsErrors = measureCaustics(it->second, caustics.get(), std::max(1, cc->getResolution() / 128));
             }
-            std::printf("%-24s %-28s %8.1f ms  plain %6.1f ms  x%.2f  refraction px median %.3f p99 %.2f  NaN %zu\n",
+            std::printf("%-24s %-28s %8.1f ms  plain %6.1f ms  x%.2f  refraction px median %.3f p99 %.2f  NaN %zu"
+                        "  (timing %.0f s, capture+reference %.0f s, metrics %.0f s)\n",
                         tech.name.c_str(), v.name.c_str(), r.frameMs, r.plainMs, r.ratio, r.refractionPx.median,
-                        r.refractionPx.p99, r.nanPixels);
+                        r.refractionPx.p99, r.nanPixels, osg::Timer::instance()->delta_s(start, phase), captureAndTraceS,
+                        osg::Timer::instance()->delta_s(phase, osg::Timer::instance()->tick()) - captureAndTraceS);
             std::fflush(stdout);
             records.push_back(r);
             errors.push_back(std::move(ve));

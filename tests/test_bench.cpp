@@ -1,0 +1,239 @@
+// The benchmark's measuring parts (apps/osgwaterbench): the Embree reference against closed-form
+// optics, the photon tracer against flat-water transmission, the per-pixel metric on flat water
+// over a checkerboard (it passes the iterative search and fails a wrong index of refraction), and
+// `osgwaterbench --quick` writing valid JSON.
+#include "GLHarness.h"
+#include "Metrics.h"
+#include "PhotonTracer.h"
+#include "Probe.h"
+#include "Reference.h"
+#include <osgWater/PassMath>
+#include <osgWater/WaterNode>
+#include <nlohmann/json.hpp>
+#include <glm/geometric.hpp>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+
+using namespace bench;
+
+namespace {
+
+const double kDepth = 2.0;
+
+// a flat horizontal quad (two triangles) at height z, side `size`
+TriangleMesh flatQuad(double z, double size)
+{
+    TriangleMesh m;
+    const double h = size / 2;
+    m.add({ -h, -h, z }, { h, -h, z }, { h, h, z });
+    m.add({ -h, -h, z }, { h, h, z }, { -h, h, z });
+    return m;
+}
+
+osg::ref_ptr<osgWater::WaterSurface> flatSurface()
+{
+    osg::ref_ptr<osgWater::WaterSurface> s = new osgWater::WaterSurface;
+    s->setWaves({});
+    s->setSize(400.0f);
+    return s;
+}
+
+#define REQUIRE_PROBE(probe)                                                                        \
+    do {                                                                                            \
+        if (!(probe).ok()) {                                                                        \
+            if (std::getenv("CI")) FAIL() << "CI is set and no GL context: " << (probe).why();      \
+            GTEST_SKIP() << "no GL context (" << (probe).why() << ")";                              \
+        }                                                                                           \
+    } while (0)
+
+}
+
+TEST(BenchReference, FlatWaterAgreesWithSnellInClosedFormTo10Micrometres)
+{
+    osg::ref_ptr<osgWater::WaterSurface> surface = flatSurface();
+    const RayCaster scene(flatQuad(-kDepth, 300.0)), water(collectWater(*surface, 0.0));
+    const Reference ref(scene, water, *surface, 0.0, Media{ 1.0, 1.333 });
+    const glm::dvec3 eye(0.3, -4.0, 3.0);
+    int checked = 0;
+    double worst = 0.0;
+    for (double pitch = 5.0; pitch <= 89.5; pitch += 3.5)
+        for (double yaw = -60.0; yaw <= 60.0; yaw += 15.0) {
+            const double p = osg::DegreesToRadians(pitch), y = osg::DegreesToRadians(yaw);
+            const glm::dvec3 d(std::cos(p) * std::sin(y), std::cos(p) * std::cos(y), -std::sin(p));
+            const PixelTrace t = ref.trace(eye, d);
+            ASSERT_TRUE(t.water);
+            ASSERT_TRUE(t.refracted.hit);
+            // closed form: the water hit, then sin(theta_t) = sin(theta_i) / 1.333 down to the bed
+            const glm::dvec3 U = eye + d * (-eye.z / d.z);
+            const double sinI = std::cos(p), sinT = sinI / 1.333, cosT = std::sqrt(1 - sinT * sinT);
+            const glm::dvec3 horiz = glm::normalize(glm::dvec3(d.x, d.y, 0.0));
+            const glm::dvec3 X = U + horiz * (kDepth * sinT / cosT) + glm::dvec3(0, 0, -kDepth);
+            worst = std::max(worst, glm::length(t.refracted.point - X));
+            // exact Fresnel at normal incidence and beyond: the closed form at this angle
+            const double ci = std::sin(p);
+            const double rs = (ci - 1.333 * cosT) / (ci + 1.333 * cosT), rp = (1.333 * ci - cosT) / (1.333 * ci + cosT);
+            EXPECT_NEAR(t.fresnel, 0.5 * (rs * rs + rp * rp), 1e-12);
+            EXPECT_NEAR(t.underwaterPath, kDepth / cosT, 1e-5);
+            ++checked;
+        }
+    EXPECT_GT(checked, 100);
+    EXPECT_LT(worst, 1e-5) << "largest distance from Snell's closed-form hit, metres";
+}
+
+TEST(BenchReference, FromBelowTotalInternalReflectionBeyondTheCriticalAngle)
+{
+    osg::ref_ptr<osgWater::WaterSurface> surface = flatSurface();
+    const RayCaster scene(flatQuad(-kDepth, 300.0)), water(collectWater(*surface, 0.0));
+    const Reference ref(scene, water, *surface, 0.0, Media{ 1.0, 1.333 });
+    const glm::dvec3 eye(0.0, 0.0, -1.0);
+    const double critical = std::asin(1.0 / 1.333);
+    for (double a : { critical - 0.01, critical + 0.01 }) { // angle from the vertical
+        const PixelTrace t = ref.trace(eye, glm::dvec3(std::sin(a), 0.0, std::cos(a)));
+        ASSERT_TRUE(t.water);
+        EXPECT_TRUE(t.below);
+        EXPECT_EQ(t.tir, a > critical);
+        if (t.tir) EXPECT_EQ(t.fresnel, 1.0);
+        else EXPECT_LT(t.fresnel, 1.0);
+        EXPECT_NEAR(t.underwaterPath, 1.0 / std::cos(a), 1e-9);
+    }
+}
+
+TEST(BenchPhotons, FlatWaterTransmitsOneMinusFresnelEverywhere)
+{
+    // flat water over a flat bed: refraction shifts the sun's footprint without spreading it, so
+    // every texel of the bed receives the transmitted share (1 - F) of the sun's irradiance
+    osg::ref_ptr<osgWater::WaterSurface> surface = flatSurface();
+    const RayCaster scene(flatQuad(-kDepth, 300.0)), water(collectWater(*surface, 0.0));
+    osg::Vec3d sun(0.3, 0.4, 0.866);
+    sun.normalize();
+    const osg::BoundingBox box(-20, -20, -kDepth, 20, 20, 0.0);
+    const osg::Matrixd view = osgWater::sunView(sun, box);
+    const osg::Matrixd localToSun = view * osgWater::sunProjection(view, box) * osgWater::clipToTexture();
+    PhotonSettings ps;
+    ps.photons = 400000;
+    ps.resolution = 64;
+    ps.progress = false;
+    const PhotonImage img = tracePhotons(scene, water, *surface, 0.0, localToSun, sun, ps);
+    const double expected = 1.0 - fresnelExact(sun.z(), 1.0, 1.333);
+    double sum = 0.0;
+    int n = 0;
+    for (int y = 16; y < 48; ++y)
+        for (int x = 16; x < 48; ++x) {
+            sum += img.value[size_t(y) * 64 + x];
+            ++n;
+        }
+    // tolerance: ~100 photons per texel, the mean over 1024 texels is within 0.5% (counting noise)
+    EXPECT_NEAR(sum / n, expected, 0.005 * expected);
+}
+
+namespace {
+
+// flat water over a checkerboard 2 m down, seen from 4 m away and 3 m up (as test_render_refraction)
+struct FlatScene {
+    Probe probe{ 160, 120 };
+    osg::ref_ptr<osgWater::WaterNode> water = new osgWater::WaterNode;
+    osg::ref_ptr<osgWater::WaterSurface> surface;
+
+    FlatScene()
+    {
+        water->getSurface()->setWaves({});
+        water->getSurface()->setSize(400.0f);
+        surface = water->getSurface();
+        water->getSettings()->setAttenuation(0.0f);
+        water->getSettings()->setCausticsEnabled(false);
+        water->addChild(testing_gl::checkerPlane(-float(kDepth), 120.0f, 0.5f));
+        if (!probe.ok()) return;
+        probe.viewer()->setSceneData(water.get());
+        probe.camera()->setViewMatrixAsLookAt(osg::Vec3d(0, -4, 3), osg::Vec3d(0, 6, -2), osg::Vec3d(0, 0, 1));
+    }
+
+    ViewErrors measure(double referenceIor)
+    {
+        const Estimate e = probe.capture(*water, 0.0);
+        const RayCaster scene(collectScene(*water)), waterMesh(collectWater(*surface, 0.0));
+        const Reference ref(scene, waterMesh, *surface, 0.0, Media{ 1.0, referenceIor });
+        const ReferenceImage img = traceView(ref, probe.camera()->getViewMatrix(), probe.camera()->getProjectionMatrix(),
+                                             160, 120);
+        return measureView(img, e, scene);
+    }
+};
+
+}
+
+TEST(BenchMetric, IterativeSearchIsWithinHalfAPixelOnFlatWater)
+{
+    FlatScene sc;
+    REQUIRE_PROBE(sc.probe);
+    sc.water->getSettings()->setRefractionLookup(osgWater::WaterSettings::ITERATIVE);
+    sc.water->getSettings()->setFresnelModel(osgWater::WaterSettings::FRESNEL_EXACT);
+    ViewErrors v = sc.measure(1.333);
+    EXPECT_EQ(v.nanPixels, 0u);
+    EXPECT_EQ(v.misses, 0u);
+    ASSERT_GT(v.refractionPx.size(), 8000u);
+    const Quantiles q = quantiles(v.refractionPx);
+    // tolerance: half a screen pixel at the 95th percentile (the median is far below)
+    EXPECT_LT(q.p95, 0.5) << "median " << q.median << " max " << q.max;
+    // flat water: every point U + c R lies on the mirror ray, so the lookup is exact
+    const Quantiles r = quantiles(v.reflectionTexels);
+    EXPECT_LT(r.p99, 0.5);
+    // the shader's exact Fresnel against the reference's (float precision, per-pixel normal): 0.002
+    const Quantiles f = quantiles(v.fresnel);
+    EXPECT_LT(f.max, 0.002);
+}
+
+TEST(BenchMetric, WrongIndexOfRefractionReportsALargeError)
+{
+    // the renderer refracts with n = 1.1 while the reference uses water's 1.333: the metric must say so
+    FlatScene sc;
+    REQUIRE_PROBE(sc.probe);
+    sc.water->getSettings()->setWaterIOR(1.1f);
+    ViewErrors v = sc.measure(1.333);
+    ASSERT_GT(v.refractionPx.size(), 8000u);
+    const Quantiles q = quantiles(v.refractionPx);
+    EXPECT_GT(q.median, 5.0);
+    EXPECT_GT(q.over2, 0.5);
+}
+
+TEST(Osgwaterbench, QuickRunWritesValidJson)
+{
+    const std::string out = std::string(OSGWATER_TEST_TMP) + "/bench-quick";
+    std::remove((out + "/results.json").c_str());
+    const std::string cmd = std::string("'") + OSGWATER_BENCH_APP + "' --quick --scene '" + OSGWATER_LAKE_SCENE +
+                            "' --views '" + OSGWATER_LAKE_VIEWS + "' --out '" + out + "' > '" + out + ".log' 2>&1";
+    ASSERT_EQ(std::system(cmd.c_str()), 0) << "see " << out << ".log";
+    std::ifstream in(out + "/results.json");
+    ASSERT_TRUE(in.good());
+    const nlohmann::json j = nlohmann::json::parse(in); // throws (and fails) on invalid JSON
+    ASSERT_TRUE(j.is_array());
+    ASSERT_EQ(j.size(), 2u); // default and one-step, one view
+    for (const nlohmann::json& r : j) {
+        for (const char* k : { "technique", "steps", "texture_size", "view", "frame_ms", "plain_ms", "ratio",
+                               "refraction_px_median", "refraction_px_p99", "refraction_px_max",
+                               "refraction_m_median", "nan_pixels" })
+            EXPECT_TRUE(r.contains(k)) << k;
+        EXPECT_GT(r["frame_ms"].get<double>(), 0.0);
+        EXPECT_GT(r["plain_ms"].get<double>(), 0.0);
+        EXPECT_NEAR(r["ratio"].get<double>(), r["frame_ms"].get<double>() / r["plain_ms"].get<double>(), 1e-9);
+        EXPECT_GT(r["water_pixels"].get<int>(), 0);
+        EXPECT_TRUE(r["refraction_px_median"].is_number()); // the first view sees water
+        EXPECT_EQ(r["nan_pixels"].get<int>(), 0);
+    }
+    EXPECT_EQ(j[0]["technique"], "default");
+    EXPECT_EQ(j[1]["lookup"], "one-step");
+    std::ifstream csv(out + "/results.csv");
+    std::string header;
+    ASSERT_TRUE(std::getline(csv, header));
+    EXPECT_NE(header.find("refraction_px_p99"), std::string::npos);
+}
+
+TEST(Osgwaterbench, MissingSceneFileIsAClearErrorAndNonZeroExit)
+{
+    const std::string log = std::string(OSGWATER_TEST_TMP) + "/bench-missing.log";
+    const std::string cmd = std::string("'") + OSGWATER_BENCH_APP + "' --quick --scene /nonexistent.osgt --views '" +
+                            OSGWATER_LAKE_VIEWS + "' --out '" + OSGWATER_TEST_TMP + "/bench-missing' > '" + log + "' 2>&1";
+    EXPECT_NE(std::system(cmd.c_str()), 0);
+    std::ifstream in(log);
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    EXPECT_NE(text.find("scene file /nonexistent.osgt not found"), std::string::npos) << text;
+}
