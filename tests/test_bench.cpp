@@ -200,8 +200,16 @@ TEST(Osgwaterbench, QuickRunWritesValidJson)
     const std::string out = std::string(OSGWATER_TEST_TMP) + "/bench-quick";
     std::remove((out + "/results.json").c_str());
     const std::string cmd = std::string("'") + OSGWATER_BENCH_APP + "' --quick --scene '" + OSGWATER_LAKE_SCENE +
-                            "' --views '" + OSGWATER_LAKE_VIEWS + "' --out '" + out + "' > '" + out + ".log' 2>&1";
+                            "' --views '" + OSGWATER_LAKE_VIEWS + "' --out '" + out + "' --docs '" + out +
+                            "/docs' > '" + out + ".log' 2>&1";
+    std::remove((out + "/docs/benchmark-speed-error.png").c_str());
     ASSERT_EQ(std::system(cmd.c_str()), 0) << "see " << out << ".log";
+    // the generated page and its plot
+    std::ifstream page(out + "/docs/BENCHMARKS.md");
+    const std::string md((std::istreambuf_iterator<char>(page)), std::istreambuf_iterator<char>());
+    EXPECT_NE(md.find("| default |"), std::string::npos);
+    EXPECT_NE(md.find("![speed against error]"), std::string::npos) << "gnuplot did not make the plot";
+    EXPECT_TRUE(std::ifstream(out + "/docs/benchmark-speed-error.png").good());
     std::ifstream in(out + "/results.json");
     ASSERT_TRUE(in.good());
     const nlohmann::json j = nlohmann::json::parse(in); // throws (and fails) on invalid JSON

@@ -251,15 +251,6 @@ int main(int argc, char** argv)
             if (references[vi].pixels.empty())
                 references[vi] = traceView(reference, probe.camera()->getViewMatrix(), probe.camera()->getProjectionMatrix(),
                                            o.width, o.height);
-            if (std::getenv("BENCH_DEBUG")) {
-                const osg::Matrixd inv = osg::Matrixd::inverse(probe.camera()->getViewMatrix() * probe.camera()->getProjectionMatrix());
-                osg::Vec3d a = osg::Vec3d(0, 0, -1) * inv, b = osg::Vec3d(0, 0, 1) * inv;
-                glm::dvec3 d = glm::normalize(glm::dvec3(b.x() - a.x(), b.y() - a.y(), b.z() - a.z()));
-                Hit hw = waterCaster.intersect(glm::dvec3(v.eye.x(), v.eye.y(), v.eye.z()), d);
-                Hit hs = sceneCaster.intersect(glm::dvec3(v.eye.x(), v.eye.y(), v.eye.z()), d);
-                std::printf("dbg images %d %d %d %d\n", e.color.valid(), e.bottom.valid(), e.reflection.valid(), e.fresnel.valid());
-                std::printf("dbg dir %f %f %f water %d %f scene %d %f (%f %f %f)\n", d.x, d.y, d.z, hw.hit, hw.t, hs.hit, hs.t, hs.point.x, hs.point.y, hs.point.z);
-            }
             const double captureAndTraceS = osg::Timer::instance()->delta_s(phase, osg::Timer::instance()->tick());
             r.eyeBelow = reference.eyeBelow(glm::dvec3(v.eye.x(), v.eye.y(), v.eye.z()));
             ViewErrors ve = measureView(references[vi], e, sceneCaster);
