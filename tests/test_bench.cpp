@@ -39,14 +39,6 @@ osg::ref_ptr<osgWater::WaterSurface> flatSurface()
     return s;
 }
 
-#define REQUIRE_PROBE(probe)                                                                        \
-    do {                                                                                            \
-        if (!(probe).ok()) {                                                                        \
-            if (std::getenv("CI")) FAIL() << "CI is set and no GL context: " << (probe).why();      \
-            GTEST_SKIP() << "no GL context (" << (probe).why() << ")";                              \
-        }                                                                                           \
-    } while (0)
-
 }
 
 TEST(BenchReference, FlatWaterAgreesWithSnellInClosedFormTo10Micrometres)
@@ -164,7 +156,7 @@ struct FlatScene {
 TEST(BenchMetric, IterativeSearchIsWithinHalfAPixelOnFlatWater)
 {
     FlatScene sc;
-    REQUIRE_PROBE(sc.probe);
+    REQUIRE_GL(sc.probe); // Probe has ok() and why() like the harness
     sc.water->getSettings()->setRefractionLookup(osgWater::WaterSettings::ITERATIVE);
     sc.water->getSettings()->setFresnelModel(osgWater::WaterSettings::FRESNEL_EXACT);
     ViewErrors v = sc.measure(1.333);
@@ -186,7 +178,7 @@ TEST(BenchMetric, WrongIndexOfRefractionReportsALargeError)
 {
     // the renderer refracts with n = 1.1 while the reference uses water's 1.333: the metric must say so
     FlatScene sc;
-    REQUIRE_PROBE(sc.probe);
+    REQUIRE_GL(sc.probe); // Probe has ok() and why() like the harness
     sc.water->getSettings()->setWaterIOR(1.1f);
     ViewErrors v = sc.measure(1.333);
     ASSERT_GT(v.refractionPx.size(), 8000u);

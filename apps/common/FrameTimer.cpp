@@ -1,5 +1,6 @@
 #include "FrameTimer.h"
 #include <osg/GL>
+#include <OpenThreads/Thread>
 #include <osg/Texture2D>
 #include <algorithm>
 #include <iostream>
@@ -57,9 +58,14 @@ osg::ref_ptr<osg::GraphicsContext> createPbuffer(int width, int height)
     traits->depth = 24;
     traits->pbuffer = true;
     traits->doubleBuffer = false;
-    osg::ref_ptr<osg::GraphicsContext> gc = osg::GraphicsContext::createGraphicsContext(traits.get());
-    if (!gc.valid() || !gc->realize()) return nullptr;
-    return gc;
+    // several processes creating pbuffers on one Xvfb at once (ctest -j) now and then get a
+    // transient GLX failure: try a few times before giving up
+    for (int attempt = 0; attempt < 4; ++attempt) {
+        osg::ref_ptr<osg::GraphicsContext> gc = osg::GraphicsContext::createGraphicsContext(traits.get());
+        if (gc.valid() && gc->realize()) return gc;
+        OpenThreads::Thread::microSleep(250000);
+    }
+    return nullptr;
 }
 
 bool setUpViewer(osgViewer::Viewer& viewer, bool headless, int width, int height)

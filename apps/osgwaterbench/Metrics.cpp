@@ -48,8 +48,7 @@ size_t countNonFinite(const osg::Image* img)
 
 bool shownPoint(const osg::Vec4f& est, const Estimate& e, const RayCaster& scene, glm::dvec3& out)
 {
-    const osg::Vec3d c = osg::Matrixd::inverse(e.refractionView).getTrans();
-    const glm::dvec3 C(c.x(), c.y(), c.z());
+    const glm::dvec3 C(e.refractionEye.x(), e.refractionEye.y(), e.refractionEye.z());
     glm::dvec3 dir;
     if (est.w() > 1.5f && est.w() < 2.5f) dir = glm::dvec3(est.x(), est.y(), est.z()) - C;
     else if (est.w() > 2.5f && est.w() < 3.5f) dir = glm::dvec3(est.x(), est.y(), est.z());

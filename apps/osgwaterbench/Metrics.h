@@ -22,6 +22,7 @@ Quantiles quantiles(std::vector<float>& v);
 struct Estimate {
     osg::ref_ptr<osg::Image> color, bottom, reflection, fresnel; //!< float RGBA, the view's size
     osg::Matrixd refractionView;       //!< local -> refraction pass eye space
+    osg::Vec3d refractionEye;          //!< the refraction camera's position, local frame
     bool eyeBelow = false;
     double level = 0.0, clearance = 0.0; //!< the refraction pass keeps z <= level + clearance (above) or >= level - clearance
     osg::Matrixd reflectionMVP;        //!< local -> reflection pass clip space

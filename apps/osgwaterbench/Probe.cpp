@@ -104,6 +104,7 @@ Estimate Probe::capture(osgWater::WaterNode& water, double t)
     if (osgWater::ViewPasses* p = water.getViewPasses(camera())) {
         e.eyeBelow = p->getEyeBelow();
         e.refractionView = p->getRefractionCamera()->getViewMatrix();
+        e.refractionEye = osg::Matrixd::inverse(e.refractionView).getTrans();
         e.reflectionMVP = p->getReflectionCamera()->getViewProjection();
         auto it = p->getReflectionCamera()->getBufferAttachmentMap().find(osg::Camera::COLOR_BUFFER);
         if (it != p->getReflectionCamera()->getBufferAttachmentMap().end() && it->second._texture.valid())

@@ -9,6 +9,7 @@
 #include "Techniques.h"
 #include "Views.h"
 #include "../common/FrameTimer.h"
+#include "../common/SceneWater.h"
 #include <osgDB/FileUtils>
 #include <osgDB/ReadFile>
 #include <osg/GL>
@@ -27,34 +28,17 @@ using namespace bench;
 
 namespace {
 
-class FindWater : public osg::NodeVisitor
-{
-public:
-    FindWater() : osg::NodeVisitor(TRAVERSE_ALL_CHILDREN) {}
-    void apply(osg::Group& g) override
-    {
-        if (!found) found = dynamic_cast<osgWater::WaterNode*>(&g);
-        if (!found) traverse(g);
-    }
-    osgWater::WaterNode* found = nullptr;
-};
-
 // Loads an .osgt with a WaterNode, or any model with water added at z = 0 over its extent.
 osg::ref_ptr<osgWater::WaterNode> loadScene(const std::string& file, osg::ref_ptr<osg::Node>& root)
 {
     root = osgDB::readRefNodeFile(file);
     if (!root.valid()) return nullptr;
-    FindWater find;
-    root->accept(find);
-    osg::ref_ptr<osgWater::WaterNode> water = find.found;
-    if (!water.valid()) {
-        std::cout << file << " has no osgWater::WaterNode: adding water at z = 0" << std::endl;
-        water = new osgWater::WaterNode;
-        const osg::BoundingSphere b = root->getBound();
+    bool added = false;
+    osg::ref_ptr<osgWater::WaterNode> water = osgWaterApps::findOrAddWater(root, file, &added);
+    if (added) { // cover the model
+        const osg::BoundingSphere b = water->getChild(0)->getBound();
         water->getSurface()->setSize(float(2.0 * b.radius()));
         water->getSurface()->setCenter(osg::Vec2(b.center().x(), b.center().y()));
-        water->addChild(root.get());
-        root = water;
     }
     return water;
 }

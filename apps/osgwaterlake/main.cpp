@@ -6,6 +6,7 @@
 #include "LakeOptions.h"
 #include "WaterKeys.h"
 #include "../common/FrameTimer.h"
+#include "../common/SceneWater.h"
 #include <osgDB/FileNameUtils>
 #include <osgDB/ReadFile>
 #include <osgDB/WriteFile>
@@ -20,18 +21,6 @@
 #include <iostream>
 
 namespace {
-
-class FindWater : public osg::NodeVisitor
-{
-public:
-    FindWater() : osg::NodeVisitor(TRAVERSE_ALL_CHILDREN) {}
-    void apply(osg::Group& g) override
-    {
-        if (!found) found = dynamic_cast<osgWater::WaterNode*>(&g);
-        if (!found) traverse(g);
-    }
-    osgWater::WaterNode* found = nullptr;
-};
 
 // OSG's WriteToFile adds the context number to the name; the screenshot goes where it was asked to
 struct WriteExactly : public osgViewer::ScreenCaptureHandler::CaptureOperation {
@@ -197,15 +186,7 @@ int main(int argc, char** argv)
         std::cerr << "error: could not read " << file << std::endl;
         return 1;
     }
-    FindWater find;
-    loaded->accept(find);
-    osg::ref_ptr<osgWater::WaterNode> water = find.found;
-    if (!water.valid()) { // any model: put water under it
-        std::cout << file << " has no osgWater::WaterNode: adding water at z = 0" << std::endl;
-        water = new osgWater::WaterNode;
-        water->addChild(loaded.get());
-        loaded = water;
-    }
+    osg::ref_ptr<osgWater::WaterNode> water = osgWaterApps::findOrAddWater(loaded, file);
     o.apply(*water);
     water->setPassTimingEnabled(true);
 
