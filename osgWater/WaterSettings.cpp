@@ -38,8 +38,16 @@ int clampInt(const char* name, int v, int lo, int hi)
 
 osg::Vec3 clampColor(const char* name, const osg::Vec3& c, const osg::Vec3& fallback, float hi)
 {
+    // one warning for the whole colour, naming the value used
     osg::Vec3 r;
-    for (int i = 0; i < 3; ++i) r[i] = clampOr(name, c[i], 0.0f, hi, fallback[i]);
+    bool changed = false;
+    for (int i = 0; i < 3; ++i) {
+        r[i] = std::isnan(c[i]) ? fallback[i] : std::min(std::max(c[i], 0.0f), hi);
+        changed = changed || !(r[i] == c[i]);
+    }
+    if (changed)
+        OSG_WARN << "osgWater::WaterSettings: " << name << " = (" << c << ") has NaN or values out of [0, " << hi
+                 << "], using (" << r << ")" << std::endl;
     return r;
 }
 
@@ -131,13 +139,15 @@ void WaterSettings::setFovExtensionFalloff(float v) { _fovExtFalloff = clampOr("
 
 void WaterSettings::setSunDirection(const osg::Vec3& d)
 {
-    osg::Vec3 n = d;
-    if (!n.valid() || n.length2() < 1e-12f) {
-        OSG_WARN << "osgWater::WaterSettings: sunDirection " << d << " is not a direction, using default" << std::endl;
+    osg::Vec3d n(d); // double: a 1e30 component would overflow the float length
+    const bool finite = std::isfinite(n.x()) && std::isfinite(n.y()) && std::isfinite(n.z());
+    if (!finite || n.length2() < 1e-24) {
         n = defaultSunDirection();
+        OSG_WARN << "osgWater::WaterSettings: sunDirection (" << d << ") is not a direction, using (" << n << ")"
+                 << std::endl;
     }
     n.normalize();
-    _sunDirection = n;
+    _sunDirection = osg::Vec3(n);
     touch();
 }
 

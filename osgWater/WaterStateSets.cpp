@@ -99,7 +99,7 @@ void WaterStateSets::applySettings(const WaterSettings& s, const WaterSurface& s
     for (unsigned int i = 0; i < WaterSurface::MAX_WAVES; ++i) {
         osg::Vec4f v;
         if (i < waves.size()) {
-            const float k = waves[i].wavenumber();
+            const float k = float(waves[i].wavenumber());
             v.set(waves[i].direction.x() * k, waves[i].direction.y() * k, waves[i].amplitude, 0.0f);
         }
         wu->setElement(i, v);
@@ -114,7 +114,8 @@ void WaterStateSets::applySettings(const WaterSettings& s, const WaterSurface& s
     setDefine(w, "OSGWATER_NO_REFLECTION", !s.getReflectionEnabled());
     setDefine(w, "OSGWATER_NO_REFRACTION", !s.getRefractionEnabled());
     if (debug == DEBUG_NONE) w->removeDefine("OSGWATER_DEBUG");
-    else w->setDefine("OSGWATER_DEBUG", debug == DEBUG_BOTTOM_HIT ? "1" : debug == DEBUG_REFLECTION_LOOKUP ? "2" : "3");
+    else w->setDefine("OSGWATER_DEBUG", debug == DEBUG_BOTTOM_HIT ? "1" : debug == DEBUG_REFLECTION_LOOKUP ? "2"
+                                        : debug == DEBUG_FRESNEL ? "3" : "4");
 }
 
 void WaterStateSets::applyTime(const WaterSurface& surface, double t)

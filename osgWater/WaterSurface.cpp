@@ -10,8 +10,8 @@ const double kTwoPi = 6.283185307179586;
 const double kGravity = 9.81;
 }
 
-float Wave::wavenumber() const { return float(kTwoPi / std::max(wavelength, 1.0e-3f)); }
-float Wave::angularFrequency() const { return float(std::sqrt(kGravity * wavenumber())); }
+double Wave::wavenumber() const { return kTwoPi / std::max(double(wavelength), 1.0e-3); }
+double Wave::angularFrequency() const { return std::sqrt(kGravity * wavenumber()); }
 
 std::vector<Wave> osgWater::defaultWaves()
 {
@@ -39,24 +39,31 @@ WaterSurface::WaterSurface(const WaterSurface& o, const osg::CopyOp& copyop)
 
 void WaterSurface::setLevel(double z)
 {
-    if (!std::isfinite(z)) { OSG_WARN << "osgWater::WaterSurface: level " << z << " is not finite, using 0" << std::endl; z = 0.0; }
+    if (!std::isfinite(z) || std::fabs(z) > 1.0e7) {
+        OSG_WARN << "osgWater::WaterSurface: level " << z << " is not finite or beyond 1e7 m, using 0" << std::endl;
+        z = 0.0;
+    }
     _level = z;
     rebuild();
 }
 
 void WaterSurface::setSize(float size)
 {
-    if (!(size > 0.01f) || !std::isfinite(size)) {
-        OSG_WARN << "osgWater::WaterSurface: size " << size << " clamped to 100" << std::endl;
-        size = 100.0f;
-    }
-    _size = std::min(size, 1.0e7f);
+    const float used = !(size > 0.01f) ? 100.0f : std::min(size, 1.0e7f); // NaN and <= 0: the default
+    if (used != size)
+        OSG_WARN << "osgWater::WaterSurface: size " << size << " out of (0.01, 1e7], using " << used << std::endl;
+    _size = used;
     rebuild();
 }
 
 void WaterSurface::setCenter(const osg::Vec2& c)
 {
-    _center = c.valid() ? c : osg::Vec2(0.0f, 0.0f);
+    osg::Vec2 used;
+    for (int i = 0; i < 2; ++i) used[i] = std::isnan(c[i]) ? 0.0f : std::min(std::max(c[i], -1.0e7f), 1.0e7f);
+    if (!(used == c))
+        OSG_WARN << "osgWater::WaterSurface: center (" << c.x() << " " << c.y() << ") out of [-1e7, 1e7], using ("
+                 << used.x() << " " << used.y() << ")" << std::endl;
+    _center = used;
     rebuild();
 }
 
@@ -74,17 +81,28 @@ void WaterSurface::setWaves(const std::vector<Wave>& waves)
         OSG_WARN << "osgWater::WaterSurface: " << waves.size() << " waves given, using the first " << MAX_WAVES << std::endl;
     _waves.assign(waves.begin(), waves.begin() + std::min<size_t>(waves.size(), MAX_WAVES));
     for (Wave& w : _waves) {
-        if (!w.direction.valid() || w.direction.length2() < 1e-12f) w.direction.set(1.0f, 0.0f);
+        if (!std::isfinite(w.direction.x()) || !std::isfinite(w.direction.y()) || w.direction.length2() < 1e-12f
+            || !std::isfinite(w.direction.length2())) {
+            OSG_WARN << "osgWater::WaterSurface: wave direction (" << w.direction.x() << " " << w.direction.y()
+                     << ") is not a direction, using (1 0)" << std::endl;
+            w.direction.set(1.0f, 0.0f);
+        }
         w.direction.normalize();
-        if (!std::isfinite(w.wavelength) || w.wavelength < 0.01f) {
-            OSG_WARN << "osgWater::WaterSurface: wavelength " << w.wavelength << " clamped to 0.01" << std::endl;
-            w.wavelength = 0.01f;
+        // a wave longer than 1e6 m or higher than 1e3 m is no lake wave: both clamped
+        const float wl = std::isnan(w.wavelength) ? 4.0f : std::min(std::max(w.wavelength, 0.01f), 1.0e6f);
+        if (wl != w.wavelength) {
+            OSG_WARN << "osgWater::WaterSurface: wave wavelength " << w.wavelength << " out of [0.01, 1e6], using " << wl << std::endl;
+            w.wavelength = wl;
         }
-        if (!std::isfinite(w.amplitude) || w.amplitude < 0.0f) {
-            OSG_WARN << "osgWater::WaterSurface: amplitude " << w.amplitude << " clamped to 0" << std::endl;
-            w.amplitude = 0.0f;
+        const float a = std::isnan(w.amplitude) ? 0.0f : std::min(std::max(w.amplitude, 0.0f), 1.0e3f);
+        if (a != w.amplitude) {
+            OSG_WARN << "osgWater::WaterSurface: wave amplitude " << w.amplitude << " out of [0, 1e3], using " << a << std::endl;
+            w.amplitude = a;
         }
-        if (!std::isfinite(w.phase)) w.phase = 0.0f;
+        if (!std::isfinite(w.phase)) {
+            OSG_WARN << "osgWater::WaterSurface: wave phase " << w.phase << " is not finite, using 0" << std::endl;
+            w.phase = 0.0f;
+        }
     }
     rebuild();
 }
@@ -112,7 +130,7 @@ float WaterSurface::wrappedPhase(unsigned int i, double t) const
     if (i >= _waves.size()) return 0.0f;
     if (!std::isfinite(t)) t = 0.0;
     const Wave& w = _waves[i];
-    double p = std::fmod(double(w.angularFrequency()) * t - double(w.phase), kTwoPi);
+    double p = std::fmod(w.angularFrequency() * t - double(w.phase), kTwoPi);
     if (p < 0.0) p += kTwoPi;
     return float(p);
 }

@@ -99,3 +99,26 @@ TEST(Surface, BadParametersAreClamped)
     EXPECT_NEAR(s->getWaves()[2].direction.length(), 1.0f, 1e-6f);
     EXPECT_TRUE(std::isfinite(s->height(0.5, 0.5, 1.0)));
 }
+
+// The waves' phase omega t is computed in double precision on the CPU and wrapped before it
+// reaches the GPU: at t = 1e7 s the surface must still match an evaluation in long double.
+TEST(Surface, AtTenMillionSecondsTheSurfaceMatchesALongDoubleEvaluation)
+{
+    osg::ref_ptr<WaterSurface> s = new WaterSurface;
+    s->setLevel(2.5);
+    const long double twoPi = 6.283185307179586476925286766559L, g = 9.81L;
+    for (double t : { 1.0e7, 1.0e7 + 0.37, 9.87654321e6 })
+        for (double x = -40.0; x <= 40.0; x += 13.7)
+            for (double y = -40.0; y <= 40.0; y += 11.3) {
+                long double h = 2.5L;
+                for (const Wave& w : s->getWaves()) {
+                    const long double k = twoPi / (long double)w.wavelength;
+                    const long double omega = std::sqrt(g * k);
+                    h += (long double)w.amplitude
+                         * std::sin(k * ((long double)w.direction.x() * x + (long double)w.direction.y() * y)
+                                    - omega * (long double)t + (long double)w.phase);
+                }
+                EXPECT_NEAR(s->height(x, y, t), double(h), 1.0e-3) << "t " << t << " at " << x << ", " << y;
+                EXPECT_NEAR(s->height(x, y, t), double(h), 1.0e-5) << "well inside the 1 mm bound";
+            }
+}

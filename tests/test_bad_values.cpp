@@ -1,0 +1,171 @@
+// Every numeric setting of WaterSettings and WaterSurface, fed negative, zero, NaN, Inf and absurd
+// values: the value kept is finite and in range, and a changed value says so in exactly one warning
+// naming the setting; a value kept as given says nothing.
+#include <osgWater/WaterSettings>
+#include <osgWater/WaterSurface>
+#include "WarnCapture.h"
+#include <gtest/gtest.h>
+#include <climits>
+#include <cmath>
+#include <functional>
+#include <limits>
+
+using namespace osgWater;
+
+namespace {
+
+size_t countWarnings(const std::string& text)
+{
+    size_t n = 0;
+    for (size_t p = text.find("osgWater::"); p != std::string::npos; p = text.find("osgWater::", p + 1)) ++n;
+    return n;
+}
+
+struct FloatSetting {
+    const char* name;
+    std::function<void(WaterSettings&, WaterSurface&, float)> set;
+    std::function<float(const WaterSettings&, const WaterSurface&)> get;
+    float lo, hi;
+};
+
+const float kNaN = std::numeric_limits<float>::quiet_NaN();
+const float kInf = std::numeric_limits<float>::infinity();
+
+#define SETTING(NAME, SETTER, GETTER, LO, HI)                                                       \
+    FloatSetting { NAME, [](WaterSettings& s, WaterSurface&, float v) { s.SETTER(v); },              \
+                   [](const WaterSettings& s, const WaterSurface&) { return float(s.GETTER()); }, LO, HI }
+#define COLOR(NAME, SETTER, GETTER, HI)                                                                       \
+    FloatSetting { NAME, [](WaterSettings& s, WaterSurface&, float v) { s.SETTER(osg::Vec3(v, 0.5f, v)); },   \
+                   [](const WaterSettings& s, const WaterSurface&) { return s.GETTER().x() + s.GETTER().z(); }, \
+                   0.0f, 2.0f * HI }
+#define WAVE(NAME, FIELD, LO, HI)                                                                       \
+    FloatSetting { NAME, [](WaterSettings&, WaterSurface& w, float v) {                                 \
+                       std::vector<Wave> waves(1); waves[0].FIELD = v; w.setWaves(waves); },          \
+                   [](const WaterSettings&, const WaterSurface& w) { return float(w.getWaves()[0].FIELD); }, LO, HI }
+
+std::vector<FloatSetting> floatSettings()
+{
+    return {
+        SETTING("airIOR", setAirIOR, getAirIOR, 1.0f, 3.0f),
+        SETTING("waterIOR", setWaterIOR, getWaterIOR, 1.0f, 3.0f),
+        SETTING("attenuation", setAttenuation, getAttenuation, 0.0f, 100.0f),
+        SETTING("fresnelExponent", setFresnelExponent, getFresnelExponent, 0.1f, 64.0f),
+        SETTING("reflectionScale", setReflectionScale, getReflectionScale, 0.0f, 1000.0f),
+        SETTING("searchTolerance", setSearchTolerance, getSearchTolerance, 0.0f, 10.0f),
+        SETTING("oneStepScale", setOneStepScale, getOneStepScale, 0.0f, 100.0f),
+        SETTING("oneStepMaxDepth", setOneStepMaxDepth, getOneStepMaxDepth, 0.0f, 1.0e4f),
+        SETTING("underwaterLookupScale", setUnderwaterLookupScale, getUnderwaterLookupScale, 0.0f, 1000.0f),
+        SETTING("clipOffset", setClipOffset, getClipOffset, 0.0f, 100.0f),
+        SETTING("causticsIntensity", setCausticsIntensity, getCausticsIntensity, 0.0f, 100.0f),
+        SETTING("glowIntensity", setGlowIntensity, getGlowIntensity, 0.0f, 100.0f),
+        SETTING("glowRadius", setGlowRadius, getGlowRadius, 0.0f, 32.0f),
+        SETTING("glowResolution", setGlowResolution, getGlowResolution, 1.0f / 64.0f, 1.0f),
+        SETTING("glowExponent", setGlowExponent, getGlowExponent, 1.0f, 10000.0f),
+        SETTING("fovExtensionNear", setFovExtensionNear, getFovExtensionNear, 1.0f, 4.0f),
+        SETTING("fovExtensionFar", setFovExtensionFar, getFovExtensionFar, 1.0f, 4.0f),
+        SETTING("fovExtensionFalloff", setFovExtensionFalloff, getFovExtensionFalloff, 0.01f, 1.0e5f),
+        COLOR("waterColor", setWaterColor, getWaterColor, 1.0f),
+        COLOR("sunColor", setSunColor, getSunColor, 100.0f),
+        COLOR("ambientColor", setAmbientColor, getAmbientColor, 100.0f),
+        FloatSetting{ "sunDirection",
+                      [](WaterSettings& s, WaterSurface&, float v) { s.setSunDirection(osg::Vec3(v, v, v)); },
+                      [](const WaterSettings& s, const WaterSurface&) { return s.getSunDirection().length(); },
+                      0.999f, 1.001f },
+        FloatSetting{ "level", [](WaterSettings&, WaterSurface& w, float v) { w.setLevel(v); },
+                      [](const WaterSettings&, const WaterSurface& w) { return float(w.getLevel()); }, -1e7f, 1e7f },
+        FloatSetting{ "size", [](WaterSettings&, WaterSurface& w, float v) { w.setSize(v); },
+                      [](const WaterSettings&, const WaterSurface& w) { return w.getSize(); }, 0.01f, 1e7f },
+        FloatSetting{ "center", [](WaterSettings&, WaterSurface& w, float v) { w.setCenter(osg::Vec2(v, v)); },
+                      [](const WaterSettings&, const WaterSurface& w) { return w.getCenter().x(); }, -1e7f, 1e7f },
+        WAVE("wavelength", wavelength, 0.01f, 1e6f),
+        WAVE("amplitude", amplitude, 0.0f, 1e3f),
+        WAVE("phase", phase, -std::numeric_limits<float>::max(), std::numeric_limits<float>::max()),
+        FloatSetting{ "direction",
+                      [](WaterSettings&, WaterSurface& w, float v) {
+                          std::vector<Wave> waves(1); waves[0].direction.set(v, 0.0f); w.setWaves(waves); },
+                      [](const WaterSettings&, const WaterSurface& w) { return w.getWaves()[0].direction.length(); },
+                      0.999f, 1.001f },
+    };
+}
+
+struct IntSetting {
+    const char* name;
+    std::function<void(WaterSettings&, WaterSurface&, long long)> set;
+    std::function<long long(const WaterSettings&, const WaterSurface&)> get;
+    long long lo, hi;
+};
+
+#define ISETTING(NAME, SETTER, GETTER, LO, HI)                                                        \
+    IntSetting { NAME, [](WaterSettings& s, WaterSurface&, long long v) { s.SETTER(int(v)); },          \
+                 [](const WaterSettings& s, const WaterSurface&) { return (long long)s.GETTER(); }, LO, HI }
+
+std::vector<IntSetting> intSettings()
+{
+    return {
+        ISETTING("searchSteps", setSearchSteps, getSearchSteps, 1, 8),
+        ISETTING("reflectionTextureSize", setReflectionTextureSize, getReflectionTextureSize, 16, 4096),
+        ISETTING("refractionTextureSize", setRefractionTextureSize, getRefractionTextureSize, 16, 4096),
+        ISETTING("causticsResolution", setCausticsResolution, getCausticsResolution, 16, 4096),
+        ISETTING("photonGridSize", setPhotonGridSize, getPhotonGridSize, 16, 4096),
+        IntSetting{ "resolution", [](WaterSettings&, WaterSurface& w, long long v) { w.setResolution((unsigned int)v); },
+                    [](const WaterSettings&, const WaterSurface& w) { return (long long)w.getResolution(); }, 2, 1025 },
+    };
+}
+
+}
+
+TEST(BadValues, EveryFloatSettingKeepsAFiniteInRangeValueAndWarnsOnce)
+{
+    const float values[] = { -1.0f, 0.0f, kNaN, kInf, -kInf, 1e30f, -1e30f, 1e-30f };
+    for (const FloatSetting& f : floatSettings())
+        for (float v : values) {
+            osg::ref_ptr<WaterSettings> s = new WaterSettings;
+            osg::ref_ptr<WaterSurface> w = new WaterSurface;
+            ScopedWarnCapture capture;
+            f.set(*s, *w, v);
+            const float kept = f.get(*s, *w);
+            const std::string text = capture.str();
+            SCOPED_TRACE(std::string(f.name) + " = " + std::to_string(v) + ", warnings: " + text);
+            EXPECT_TRUE(std::isfinite(kept));
+            EXPECT_GE(kept, f.lo);
+            EXPECT_LE(kept, f.hi);
+            EXPECT_LE(countWarnings(text), 1u) << "one warning per bad value";
+            if (countWarnings(text) == 1) EXPECT_NE(text.find(f.name), std::string::npos) << "the warning names the setting";
+            if (!std::isfinite(v)) EXPECT_EQ(countWarnings(text), 1u) << "a non-finite value is never kept silently";
+        }
+}
+
+TEST(BadValues, EveryIntegerSettingIsClampedWithOneWarning)
+{
+    const long long values[] = { -1, 0, 1, INT_MIN, INT_MAX, 1LL << 20 };
+    for (const IntSetting& f : intSettings())
+        for (long long v : values) {
+            osg::ref_ptr<WaterSettings> s = new WaterSettings;
+            osg::ref_ptr<WaterSurface> w = new WaterSurface;
+            ScopedWarnCapture capture;
+            f.set(*s, *w, v);
+            const long long kept = f.get(*s, *w);
+            const std::string text = capture.str();
+            SCOPED_TRACE(std::string(f.name) + " = " + std::to_string(v) + ", warnings: " + text);
+            EXPECT_GE(kept, f.lo);
+            EXPECT_LE(kept, f.hi);
+            const bool changed = f.name == std::string("resolution") ? (long long)(unsigned int)v != kept : v != kept;
+            EXPECT_EQ(countWarnings(text), changed ? 1u : 0u);
+            if (changed) EXPECT_NE(text.find(std::to_string(kept)), std::string::npos) << "the warning gives the value used";
+        }
+}
+
+TEST(BadValues, AGoodValueIsKeptSilently)
+{
+    osg::ref_ptr<WaterSettings> s = new WaterSettings;
+    osg::ref_ptr<WaterSurface> w = new WaterSurface;
+    ScopedWarnCapture capture;
+    s->setWaterIOR(1.5f);
+    s->setWaterColor(osg::Vec3(0.1f, 0.2f, 0.3f));
+    s->setSunDirection(osg::Vec3(0.0f, 0.0f, -1.0f)); // a sun below the horizon is a direction like any other
+    w->setLevel(-3.0);
+    w->setCenter(osg::Vec2(5.0f, -5.0f));
+    EXPECT_EQ(capture.str(), "");
+    EXPECT_FLOAT_EQ(s->getWaterIOR(), 1.5f);
+    EXPECT_EQ(s->getSunDirection(), osg::Vec3(0.0f, 0.0f, -1.0f));
+}
