@@ -16,6 +16,7 @@ CausticsSupport CausticsSupport::detect(unsigned int contextID)
                                                     && osg::isGLExtensionSupported(contextID, "GL_ARB_color_buffer_float"));
         s.pixelBuffers = ext->isBufferObjectSupported && ext->isPBOSupported;
         s.vertexTextures = ext->glslLanguageVersion >= 1.3f; // texelFetch; GL 3.0 has 16 vertex units
+        if (ext->maxTextureSize > 0) s.maxTextureSize = ext->maxTextureSize;
     }
     const char* env = std::getenv("OSGWATER_NO_FLOAT_TARGETS");
     if (env && std::atoi(env) != 0) s.floatTargets = false;

@@ -131,7 +131,9 @@ void WaterNode::cull(osgUtil::CullVisitor& cv)
     }
 
     // 2. this view's passes
-    ViewPasses* passes = _views.get(camera, this, sceneState, s.getReflectionTextureSize(), s.getRefractionTextureSize());
+    const CausticsSupport sup = support(cv.getState() ? cv.getState()->getContextID() : 0u);
+    ViewPasses* passes = _views.get(camera, this, sceneState, fitTexture("reflectionTextureSize", s.getReflectionTextureSize(), sup),
+                                    fitTexture("refractionTextureSize", s.getRefractionTextureSize(), sup));
 
     // 3. frame context, in the water's local frame
     PassContext ctx;
@@ -166,8 +168,9 @@ void WaterNode::cull(osgUtil::CullVisitor& cv)
     cv.popStateSet();
     cv.popStateSet();
 
-    // 6. glow of the sun's highlight, when it can be in view
-    if (waterVisible) cullGlow(cv, passes, ctx);
+    // 6. glow of the sun's highlight, when it can be in view (never over debug outputs: they are
+    //    data, and the glow would add light to coordinates)
+    if (waterVisible && _debug == DEBUG_NONE) cullGlow(cv, passes, ctx);
     else passes->setGlowDrawn(false);
 }
 
@@ -179,10 +182,10 @@ void WaterNode::cullGlow(osgUtil::CullVisitor& cv, ViewPasses* passes, const Pas
         return;
     }
     const double f = _settings->getGlowResolution();
-    const int w = std::max(1, int(std::lround(vp->width() * f)));
-    const int h = std::max(1, int(std::lround(vp->height() * f)));
-    const bool floatTargets = support(cv.getState() ? cv.getState()->getContextID() : 0u).floatTargets;
-    GlowPasses* glow = passes->getOrCreateGlow(w, h, floatTargets, this, _states.getSceneStateSet(),
+    const CausticsSupport sup = support(cv.getState() ? cv.getState()->getContextID() : 0u);
+    const int w = fitTexture("glow target width", std::max(1, int(std::lround(vp->width() * f))), sup);
+    const int h = fitTexture("glow target height", std::max(1, int(std::lround(vp->height() * f))), sup);
+    GlowPasses* glow = passes->getOrCreateGlow(w, h, sup.floatTargets, this, _states.getSceneStateSet(),
                                                _states.getWaterStateSet());
     glow->update(ctx, _surface.get());
     glow->cull(cv);
@@ -195,6 +198,17 @@ CausticsSupport WaterNode::support(unsigned int context)
     auto known = _support.find(context);
     if (known == _support.end()) known = _support.emplace(context, CausticsSupport::detect(context)).first;
     return known->second;
+}
+
+int WaterNode::fitTexture(const char* what, int size, const CausticsSupport& support)
+{
+    if (size <= support.maxTextureSize) return size;
+    const std::string key = std::string(what) + std::to_string(size);
+    OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_supportMutex); // views may cull in parallel
+    if (_fitWarnings.insert(key).second)
+        OSG_WARN << "osgWater: " << what << " " << size << " exceeds this context's GL_MAX_TEXTURE_SIZE, using "
+                 << support.maxTextureSize << std::endl;
+    return support.maxTextureSize;
 }
 
 const osg::BoundingBox& WaterNode::sceneBox(const osg::BoundingSphere& bs)
@@ -230,9 +244,11 @@ const CausticsLighting* WaterNode::cullCaustics(osgUtil::CullVisitor& cv, const 
         return &_caustics->getLighting(); // another view already rendered them this frame
 
     const CausticsSupport support = this->support(context);
-    if (!_caustics.valid() || !_caustics->matches(s.getCausticsResolution(), s.getPhotonGridSize(), support.floatTargets))
+    const int resolution = fitTexture("causticsResolution", s.getCausticsResolution(), support);
+    const int grid = fitTexture("photonGridSize", s.getPhotonGridSize(), support);
+    if (!_caustics.valid() || !_caustics->matches(resolution, grid, support.floatTargets))
         _caustics = new CausticsCamera(this, _states.getSceneStateSet(), _states.getWaterStateSet(),
-                                       s.getCausticsResolution(), s.getPhotonGridSize(), support.floatTargets);
+                                       resolution, grid, support.floatTargets);
     f.gather = s.getCausticsGather() == WaterSettings::GATHER_AUTO ? _caustics->autoGather(support)
                                                                   : support.resolve(s.getCausticsGather());
     if (f.gather != _activeGather) {
