@@ -12,29 +12,41 @@ using namespace osgWater;
 
 namespace {
 
-std::string rawSource(const std::string& name)
+const std::string& embedded(const std::string& name)
 {
-    std::string path = osgDB::findDataFile("osgWater/shaders/" + name);
-    if (path.empty()) path = osgDB::findDataFile(name);
-    if (!path.empty()) {
-        std::ifstream in(path.c_str());
-        if (in) {
-            OSG_INFO << "osgWater: shader " << name << " from " << path << std::endl;
-            std::stringstream ss;
-            ss << in.rdbuf();
-            return ss.str();
-        }
-    }
+    static const std::string none;
     const auto& table = detail::embeddedShaders();
     auto it = table.find(name);
     if (it != table.end()) return it->second;
     OSG_WARN << "osgWater: shader " << name << " is neither on the data path nor embedded" << std::endl;
-    return std::string();
+    return none;
 }
 
-std::string expand(const std::string& name, std::set<std::string>& seen)
+// the override file on the data path (its path in `from`), else the embedded copy
+std::string rawSource(const std::string& name, bool embeddedOnly, std::string* from)
 {
-    std::istringstream in(rawSource(name));
+    if (!embeddedOnly) {
+        std::string path = osgDB::findDataFile("osgWater/shaders/" + name);
+        if (path.empty()) path = osgDB::findDataFile(name);
+        if (!path.empty()) {
+            std::ifstream in(path.c_str());
+            std::stringstream ss;
+            if (in) ss << in.rdbuf();
+            if (in && !ss.str().empty()) {
+                OSG_INFO << "osgWater: shader " << name << " from " << path << std::endl;
+                if (from) *from = path;
+                return ss.str();
+            }
+            OSG_WARN << "osgWater: shader override " << path << " could not be read (or is empty), using the embedded "
+                     << name << std::endl;
+        }
+    }
+    return embedded(name);
+}
+
+std::string expand(const std::string& name, std::set<std::string>& seen, bool embeddedOnly, std::string* from)
+{
+    std::istringstream in(rawSource(name, embeddedOnly, from));
     std::ostringstream out;
     std::string line;
     while (std::getline(in, line)) {
@@ -43,7 +55,7 @@ std::string expand(const std::string& name, std::set<std::string>& seen)
         if (p != std::string::npos) {
             const size_t q = line.find('"', p + key.size());
             const std::string inc = line.substr(p + key.size(), q - p - key.size());
-            if (seen.insert(inc).second) out << expand(inc, seen);
+            if (seen.insert(inc).second) out << expand(inc, seen, embeddedOnly, from);
             continue;
         }
         out << line << '\n';
@@ -53,22 +65,51 @@ std::string expand(const std::string& name, std::set<std::string>& seen)
 
 }
 
-std::string osgWater::shaderSource(const std::string& name)
+std::string osgWater::shaderSource(const std::string& name, bool embeddedOnly, std::string* overrideFile)
 {
     std::set<std::string> seen;
     seen.insert(name);
-    return expand(name, seen);
+    return expand(name, seen, embeddedOnly, overrideFile);
+}
+
+FallbackProgram::FallbackProgram(const std::string& name, const std::string& vert, const std::string& frag)
+    : _vert(vert), _frag(frag)
+{
+    setName(name);
+    osg::Shader* vs = new osg::Shader(osg::Shader::VERTEX, shaderSource(vert, false, &_overrideFile));
+    vs->setName(vert);
+    osg::Shader* fs = new osg::Shader(osg::Shader::FRAGMENT, shaderSource(frag, false, &_overrideFile));
+    fs->setName(frag);
+    addShader(vs);
+    addShader(fs);
+}
+
+FallbackProgram::FallbackProgram(const FallbackProgram& o, const osg::CopyOp& copyop)
+    : osg::Program(o, copyop), _vert(o._vert), _frag(o._frag), _overrideFile(o._overrideFile)
+{
+}
+
+void FallbackProgram::apply(osg::State& state) const
+{
+    osg::Program::apply(state);
+    if (_overrideFile.empty()) return; // the embedded shaders are tested: nothing to fall back to
+    const PerContextProgram* pcp = getPCP(state);
+    if (!pcp || pcp->isLinked()) return;
+    {
+        OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_fallbackMutex);
+        if (_overrideFile.empty()) return; // another context fell back meanwhile
+        OSG_WARN << "osgWater: program " << getName() << " does not compile or link with the override "
+                 << _overrideFile << ", falling back to the embedded " << _vert << " and " << _frag << std::endl;
+        FallbackProgram* self = const_cast<FallbackProgram*>(this); // the draw thread owns this change
+        self->getShader(0)->setShaderSource(shaderSource(_vert, true));
+        self->getShader(1)->setShaderSource(shaderSource(_frag, true));
+        self->dirtyProgram();
+        self->_overrideFile.clear();
+    }
+    osg::Program::apply(state);
 }
 
 osg::Program* osgWater::createProgram(const std::string& name, const std::string& vert, const std::string& frag)
 {
-    osg::Program* p = new osg::Program;
-    p->setName(name);
-    osg::Shader* vs = new osg::Shader(osg::Shader::VERTEX, shaderSource(vert));
-    vs->setName(vert);
-    osg::Shader* fs = new osg::Shader(osg::Shader::FRAGMENT, shaderSource(frag));
-    fs->setName(frag);
-    p->addShader(vs);
-    p->addShader(fs);
-    return p;
+    return new FallbackProgram(name, vert, frag);
 }

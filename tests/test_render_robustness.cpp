@@ -2,6 +2,12 @@
 // (total internal reflection), huge times, sky everywhere in the depth texture.
 #include "GLHarness.h"
 #include <osgWater/WaterNode>
+#include "WarnCapture.h"
+#include <osgDB/FileUtils>
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
 
 using namespace testing_gl;
 using namespace osgWater;
@@ -80,4 +86,90 @@ TEST(RenderRobustness, UnderwaterEyeSwapsThePassSides)
     const double a = water->getSurface()->getMaxAmplitude();
     EXPECT_GT(refl.distance(osg::Vec3(0, 0, float(a))), 0.0);
     EXPECT_GT(refr.distance(osg::Vec3(0, 0, float(-a))), 0.0);
+}
+
+// A user's shader override (osgWater/shaders/<name> on the data path) that does not compile, or
+// cannot be read, must not leave the water missing: the program says so and uses the embedded
+// shaders, so the image is the one without the override.
+TEST(RenderRobustness, BrokenShaderOverridesFallBackToTheEmbeddedShaders)
+{
+    Harness h(64, 48);
+    REQUIRE_GL(h);
+    auto render = [&h]() {
+        osg::ref_ptr<WaterNode> water = new WaterNode;
+        water->getSettings()->setCausticsEnabled(false);
+        water->addChild(checkerPlane(-1.0f, 40.0f, 1.0f));
+        h.setScene(water.get());
+        h.lookAt(osg::Vec3d(0, -6, 2), osg::Vec3d(0, 5, -1));
+        h.frame(1.0);
+        h.frame(1.0);
+        osg::ref_ptr<osg::Image> img = h.readColor();
+        h.setScene(nullptr);
+        return img;
+    };
+    osg::ref_ptr<osg::Image> reference = render();
+    ASSERT_TRUE(reference.valid());
+
+    const std::string dir = std::string(OSGWATER_TEST_TMP) + "/override";
+    osgDB::makeDirectory(dir + "/osgWater/shaders");
+    osgDB::getDataFilePathList().push_front(dir);
+    struct Case { const char* file; const char* text; const char* says; };
+    const Case cases[] = { { "water.frag", "#version 130\nthis is not GLSL;\n", "falling back to the embedded" },
+                           { "water.vert", "", "could not be read" },
+                           { "waves.glsl", "float waterHeight(vec2 p) { return undefinedThing; }\n", "falling back" } };
+    for (const Case& c : cases) {
+        const std::string path = dir + "/osgWater/shaders/" + c.file;
+        { std::ofstream(path.c_str()) << c.text; }
+        ScopedWarnCapture warnings; // OSG's own compile errors are expected here
+        osg::ref_ptr<osg::Image> img = render();
+        std::remove(path.c_str());
+        EXPECT_NE(warnings.str().find(c.says), std::string::npos) << c.file << ": " << warnings.str();
+        ASSERT_TRUE(img.valid());
+        float worst = 0.0f;
+        for (int y = 0; y < img->t(); ++y)
+            for (int x = 0; x < img->s(); ++x)
+                for (int k = 0; k < 3; ++k)
+                    worst = std::max(worst, std::fabs(pixel(img.get(), x, y)[k] - pixel(reference.get(), x, y)[k]));
+        EXPECT_LT(worst, 1e-5f) << c.file << ": the image must be the embedded shaders' image";
+    }
+    osgDB::getDataFilePathList().pop_front();
+}
+
+// Time up to 1e7 s: the phases are wrapped in double precision on the CPU, so the surface the
+// GPU shades at t = 1e7 s is the one a long double evaluation gives, within 1 mm.
+TEST(RenderRobustness, AtTenMillionSecondsTheGPUSurfaceMatchesALongDoubleEvaluation)
+{
+    Harness h(64, 64);
+    REQUIRE_GL(h);
+    osg::ref_ptr<WaterNode> water = new WaterNode;
+    water->getSurface()->setSize(40.0f);
+    water->getSurface()->setLevel(1.25);
+    water->setDebugOutput(DEBUG_SURFACE);
+    h.setScene(water.get());
+    h.camera()->setViewMatrixAsLookAt(osg::Vec3d(0.3, 0.2, 30), osg::Vec3d(0.3, 0.2, 0), osg::Vec3d(0, 1, 0));
+    h.camera()->setProjectionMatrixAsPerspective(40.0, 1.0, 1.0, 100.0);
+    const long double twoPi = 6.283185307179586476925286766559L;
+    for (double t : { 0.0, 1.0, 1.0e7, 1.0e7 + 0.25 }) {
+        h.frame(t);
+        osg::ref_ptr<osg::Image> img = h.readColor();
+        ASSERT_TRUE(img.valid());
+        int n = 0;
+        double worst = 0.0;
+        for (int y = 0; y < img->t(); ++y)
+            for (int x = 0; x < img->s(); ++x) {
+                const float* p = pixel(img.get(), x, y);
+                if (p[3] != 2.0f) continue;
+                long double hgt = 1.25L;
+                for (const Wave& w : water->getSurface()->getWaves()) {
+                    const long double k = twoPi / (long double)w.wavelength;
+                    hgt += (long double)w.amplitude
+                           * std::sin(k * ((long double)w.direction.x() * p[0] + (long double)w.direction.y() * p[1])
+                                      - std::sqrt(9.81L * k) * (long double)t + (long double)w.phase);
+                }
+                worst = std::max(worst, std::fabs(double(hgt) - double(p[2])));
+                ++n;
+            }
+        EXPECT_GT(n, 64 * 64 * 9 / 10) << "the surface fills the view";
+        EXPECT_LT(worst, 1.0e-3) << "t = " << t;
+    }
 }
