@@ -49,9 +49,11 @@ osg::Matrixd rotatedRefractionView(const osg::Matrixd& view, const osg::Matrixd&
     const osg::Vec3d pf = osg::Vec3d(0.0, -1.0, 1.0) * inv;
     const osg::Vec3d C1 = eyePosition(view);
     osg::Vec3d I = pf - pn;
-    if (I.normalize() == 0.0 || C1.z() <= level || I.z() >= -1.0e-6) return view;
-    // eq. 1: O = C1 - (N.(C1 - V)) / (N.J) J, with N = +z and V on the plane
-    const double t = (C1.z() - level) / -I.z();
+    if (I.normalize() == 0.0 || I.z() >= -1.0e-6) return view;
+    // eq. 1: O = C1 - (N.(C1 - V)) / (N.J) J, with N = +z and V on the plane; an eye at or under
+    // the level (above a trough) turns about itself: switching the rotation off there made a
+    // visible jump in the refraction image as the eye came down to the water
+    const double t = std::max(0.0, (C1.z() - level) / -I.z());
     const osg::Vec3d O = C1 + I * t;
     // eq. 2 with N facing the incoming ray
     const osg::Vec3d N(0.0, 0.0, 1.0);

@@ -129,11 +129,30 @@ TEST(PassMath, RefractionRotationTurnsTheBottomRayOntoItsRefraction)
     const osg::Vec3d O0 = c0 + I * t0, O1 = c1 + R * t1;
     EXPECT_NEAR((O0 - O1).length(), 0.0, 1e-6);
     EXPECT_NEAR((c0 - O0).length(), (c1 - O1).length(), 1e-6); // rigid rotation
-    // eye under water or looking at the sky: unchanged
-    const osg::Matrixd under = lookAt(osg::Vec3d(0, -20, -5), osg::Vec3d(0, 0, -6));
-    EXPECT_EQ(rotatedRefractionView(under, proj, 0.0, eta), under);
+    // looking at the sky: unchanged
     const osg::Matrixd sky = lookAt(osg::Vec3d(0, -20, 5), osg::Vec3d(0, 0, 30));
     EXPECT_EQ(rotatedRefractionView(sky, proj, 0.0, eta), sky);
+}
+
+TEST(PassMath, RefractionRotationIsContinuousAsTheEyeComesDownToTheLevel)
+{
+    // an eye in a trough is below the level but in the air: the rotation must not switch off there
+    const osg::Matrixd proj = osg::Matrixd::perspective(50.0, 1.0, 0.01, 100.0);
+    const double eta = 1.0 / 1.333;
+    auto rotated = [&](double z) {
+        return rotatedRefractionView(lookAt(osg::Vec3d(0, -20, z), osg::Vec3d(0, 0, z - 3.0)), proj, 0.0, eta);
+    };
+    const osg::Matrixd above = rotated(1e-9), at = rotated(0.0), below = rotated(-1e-9);
+    for (int r = 0; r < 4; ++r)
+        for (int c = 0; c < 4; ++c) {
+            EXPECT_NEAR(above(r, c), at(r, c), 1e-6);
+            EXPECT_NEAR(below(r, c), at(r, c), 1e-6);
+        }
+    // under the level it turns about the eye itself, by the same angle as at the level
+    const osg::Matrixd view = lookAt(osg::Vec3d(0, -20, -0.2), osg::Vec3d(0, 0, -3.2));
+    const osg::Matrixd rv = rotatedRefractionView(view, proj, 0.0, eta);
+    EXPECT_NEAR((eyePosition(rv) - eyePosition(view)).length(), 0.0, 1e-9);
+    EXPECT_GT((osg::Matrixd::transform3x3(rv, osg::Vec3d(0, 0, 1)) - osg::Matrixd::transform3x3(view, osg::Vec3d(0, 0, 1))).length(), 0.1);
 }
 
 TEST(PassMath, ProjectToTextureCentre)

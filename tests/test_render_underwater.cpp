@@ -5,6 +5,8 @@
 #include <osgWater/WaterNode>
 #include <osgWater/Optics>
 #include <cmath>
+#include <algorithm>
+#include <iostream>
 
 using namespace testing_gl;
 using namespace osgWater;
@@ -226,5 +228,58 @@ TEST(RenderUnderwater, CrossingTheSurfaceNeverLosesTheWater)
         // no jump within one side of the surface (the waterline itself is between -1 and 0 mm)
         if (previous >= 0.0 && mm != 0) EXPECT_NEAR(coverage, previous, 0.05) << mm << " mm";
         previous = coverage;
+    }
+}
+
+TEST(RenderUnderwater, ACameraCrossingTheSurfaceInMillimetreStepsChangesTheImageSmoothly)
+{
+    // All effects on, waves, the eye moving 1 mm a frame from 40 mm above to 40 mm below the surface
+    // at its position, looking 10 degrees down, then 10 degrees up. Between two frames on the same
+    // side of the surface the mean colour may change by at most kStep per channel; only the step
+    // that crosses the surface (the waterline) may jump.
+    const float kStep = 0.005f; // 3x the largest change measured (0.0014, pitch +10)
+    Harness h(64, 48);
+    REQUIRE_GL(h);
+    osg::ref_ptr<WaterNode> water = new WaterNode;
+    water->getSurface()->setSize(200.0f);
+    water->addChild(checkerPlane(-2.0f, 200.0f, 1.0f));
+    water->addChild(emissiveQuad(osg::Vec3(-1, 6, -2), osg::Vec3(1, 6, -2), osg::Vec3(1, 6, 2), osg::Vec3(-1, 6, 2),
+                                 osg::Vec4(1, 0.5f, 0, 1)));
+    h.setScene(water.get());
+    const double t = 2.0, x = 0.4, y = -0.3;
+    const double surface = water->getSurface()->height(x, y, t);
+    for (double pitch : { -10.0, 10.0 }) {
+        osg::Vec3 previous;
+        bool previousBelow = false;
+        float worst = 0.0f;
+        int jumps = 0;
+        for (int mm = 40; mm >= -40; --mm) {
+            const osg::Vec3d eye(x, y, surface + mm * 1e-3 + 0.5e-3); // never exactly on it
+            const osg::Vec3d dir(0.0, std::cos(osg::DegreesToRadians(pitch)), std::sin(osg::DegreesToRadians(pitch)));
+            h.lookAt(eye, eye + dir * 10.0, 50.0);
+            h.frame(t);
+            osg::ref_ptr<osg::Image> img = h.readColor();
+            ASSERT_TRUE(img.valid() && allFinite(img.get()));
+            osg::Vec3 mean;
+            for (int r = 0; r < img->t(); ++r)
+                for (int c = 0; c < img->s(); ++c)
+                    mean += osg::Vec3(pixel(img.get(), c, r)[0], pixel(img.get(), c, r)[1], pixel(img.get(), c, r)[2]);
+            mean /= float(img->s() * img->t());
+            const bool below = water->eyeHeightAboveSurface(eye, t) < 0.0;
+            if (mm < 40) {
+                const osg::Vec3 d = mean - previous;
+                const float step = std::max({ std::fabs(d.x()), std::fabs(d.y()), std::fabs(d.z()) });
+                if (below == previousBelow) worst = std::max(worst, step);
+                if (std::getenv("OSGWATER_TEST_VERBOSE")) std::cout << pitch << " " << mm << " mm " << step << (below ? " below" : "") << std::endl;
+                if (below != previousBelow) ++jumps;
+                EXPECT_TRUE(below == previousBelow || step <= 1.0f);
+                if (below == previousBelow)
+                    EXPECT_LE(step, kStep) << "pitch " << pitch << ", " << mm << " mm: mean colour jumped";
+            }
+            previous = mean;
+            previousBelow = below;
+        }
+        EXPECT_EQ(jumps, 1) << "the path crosses the surface exactly once";
+        std::cout << "pitch " << pitch << ": largest change between frames on one side " << worst << std::endl;
     }
 }
