@@ -102,6 +102,22 @@ WaterSettings::WaterSettings(const WaterSettings& o, const osg::CopyOp& copyop)
 {
 }
 
+namespace {
+// an enum read from a file (or cast from an int) that names no model: the default, said once
+template <typename E>
+E validEnum(const char* name, E v, E last, E fallback)
+{
+    if (int(v) >= 0 && int(v) <= int(last)) return v;
+    OSG_WARN << "osgWater::WaterSettings: " << name << " = " << int(v) << " is not one of 0.." << int(last)
+             << ", using " << int(fallback) << std::endl;
+    return fallback;
+}
+}
+
+void WaterSettings::setFresnelModel(FresnelModel m) { _fresnelModel = validEnum("fresnelModel", m, FRESNEL_EXACT, FRESNEL_SCHLICK); touch(); }
+void WaterSettings::setRefractionLookup(RefractionLookup l) { _refractionLookup = validEnum("refractionLookup", l, ITERATIVE, ITERATIVE); touch(); }
+void WaterSettings::setUnderwaterModel(UnderwaterModel m) { _underwaterModel = validEnum("underwaterModel", m, UNDERWATER_THESIS, UNDERWATER_PHYSICAL); touch(); }
+void WaterSettings::setCausticsGather(CausticsGather g) { _causticsGather = validEnum("causticsGather", g, GATHER_CPU, GATHER_AUTO); touch(); }
 void WaterSettings::setAirIOR(float v) { _airIOR = clampOr("airIOR", v, 1.0f, 3.0f, 1.0f); touch(); }
 void WaterSettings::setWaterIOR(float v) { _waterIOR = clampOr("waterIOR", v, 1.0f, 3.0f, 1.333f); touch(); }
 void WaterSettings::setWaterColor(const osg::Vec3& c) { _waterColor = clampColor("waterColor", c, osg::Vec3(0.0f, 0.2f, 0.1f), 1.0f); touch(); }

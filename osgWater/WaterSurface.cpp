@@ -2,12 +2,45 @@
 #include <osg/Notify>
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 using namespace osgWater;
 
 namespace {
 const double kTwoPi = 6.283185307179586;
 const double kGravity = 9.81;
+
+// what makes a user mesh unusable, or "": vertices that are not finite (or beyond +-1e7 m, where
+// float positions are metre-coarse) poison the bound and the clip planes; indices past the
+// vertex array make GL read beyond it
+std::string meshProblem(const osg::Geometry& mesh)
+{
+    const osg::Array* v = mesh.getVertexArray();
+    if (!v || v->getNumElements() == 0) return "has no vertices";
+    const unsigned int n = v->getNumElements(), dim = v->getDataSize();
+    const unsigned int count = n * dim;
+    if (v->getDataType() == GL_FLOAT || v->getDataType() == GL_DOUBLE) {
+        for (unsigned int i = 0; i < count; ++i) {
+            const double x = v->getDataType() == GL_FLOAT ? double(static_cast<const float*>(v->getDataPointer())[i])
+                                                          : static_cast<const double*>(v->getDataPointer())[i];
+            if (!std::isfinite(x) || std::fabs(x) > 1.0e7) return "has a vertex coordinate " + std::to_string(x);
+        }
+    }
+    for (unsigned int p = 0; p < mesh.getNumPrimitiveSets(); ++p) {
+        const osg::PrimitiveSet* ps = mesh.getPrimitiveSet(p);
+        if (!ps) return "has an empty primitive set";
+        if (const osg::DrawElements* de = ps->getDrawElements()) {
+            for (unsigned int i = 0; i < de->getNumIndices(); ++i)
+                if (de->index(i) >= n) return "indexes vertex " + std::to_string(de->index(i)) + " of " + std::to_string(n);
+        } else if (const osg::DrawArrays* da = dynamic_cast<const osg::DrawArrays*>(ps)) {
+            if (da->getFirst() < 0 || da->getCount() < 0 || (long long)da->getFirst() + da->getCount() > n)
+                return "draws vertices past its vertex array";
+        } else {
+            return std::string("has a primitive set it cannot check (") + ps->className() + ")";
+        }
+    }
+    return "";
+}
 }
 
 double Wave::wavenumber() const { return kTwoPi / std::max(double(wavelength), 1.0e-3); }
@@ -87,7 +120,11 @@ void WaterSurface::setWaves(const std::vector<Wave>& waves)
                      << ") is not a direction, using (1 0)" << std::endl;
             w.direction.set(1.0f, 0.0f);
         }
-        w.direction.normalize();
+        // normalised once: a unit vector is left as it is, so writing and reading a file back
+        // is a fixed point (re-normalising in float flipped the last bit back and forth)
+        const double len = std::hypot(double(w.direction.x()), double(w.direction.y()));
+        if (std::fabs(len - 1.0) > 1.0e-6)
+            w.direction.set(float(w.direction.x() / len), float(w.direction.y() / len));
         // a wave longer than 1e6 m or higher than 1e3 m is no lake wave: both clamped
         const float wl = std::isnan(w.wavelength) ? 4.0f : std::min(std::max(w.wavelength, 0.01f), 1.0e6f);
         if (wl != w.wavelength) {
@@ -109,6 +146,11 @@ void WaterSurface::setWaves(const std::vector<Wave>& waves)
 
 void WaterSurface::setMesh(osg::Geometry* mesh)
 {
+    const std::string problem = mesh ? meshProblem(*mesh) : std::string();
+    if (!problem.empty()) {
+        OSG_WARN << "osgWater::WaterSurface: the mesh " << problem << ", using the grid instead" << std::endl;
+        mesh = nullptr;
+    }
     _userMesh = mesh;
     rebuild();
 }

@@ -169,3 +169,68 @@ TEST(BadValues, AGoodValueIsKeptSilently)
     EXPECT_FLOAT_EQ(s->getWaterIOR(), 1.5f);
     EXPECT_EQ(s->getSunDirection(), osg::Vec3(0.0f, 0.0f, -1.0f));
 }
+
+TEST(BadValues, EnumsThatNameNoModelFallBackToTheDefaultWithOneWarning)
+{
+    // a file can hold any int where an enum goes (osgDB maps unknown names to numbers)
+    struct EnumSetting {
+        const char* name;
+        std::function<int(WaterSettings&, int)> setGet;
+        int last, fallback;
+    };
+    const EnumSetting enums[] = {
+        { "fresnelModel", [](WaterSettings& s, int v) { s.setFresnelModel(WaterSettings::FresnelModel(v)); return int(s.getFresnelModel()); }, 2, 0 },
+        { "refractionLookup", [](WaterSettings& s, int v) { s.setRefractionLookup(WaterSettings::RefractionLookup(v)); return int(s.getRefractionLookup()); }, 1, 1 },
+        { "underwaterModel", [](WaterSettings& s, int v) { s.setUnderwaterModel(WaterSettings::UnderwaterModel(v)); return int(s.getUnderwaterModel()); }, 1, 0 },
+        { "causticsGather", [](WaterSettings& s, int v) { s.setCausticsGather(WaterSettings::CausticsGather(v)); return int(s.getCausticsGather()); }, 3, 0 },
+    };
+    for (const EnumSetting& e : enums)
+        for (int v : { INT_MIN, -1, 0, 1, e.last, e.last + 1, 1000, INT_MAX }) {
+            osg::ref_ptr<WaterSettings> s = new WaterSettings;
+            ScopedWarnCapture capture;
+            const int kept = e.setGet(*s, v);
+            const bool valid = v >= 0 && v <= e.last;
+            SCOPED_TRACE(std::string(e.name) + " = " + std::to_string(v) + ", warnings: " + capture.str());
+            EXPECT_EQ(kept, valid ? v : e.fallback);
+            EXPECT_EQ(countWarnings(capture.str()), valid ? 0u : 1u);
+            if (!valid) EXPECT_NE(capture.str().find(e.name), std::string::npos);
+        }
+}
+
+TEST(BadValues, AMeshWithBadVerticesOrIndicesIsRefusedWithOneWarning)
+{
+    auto mesh = [](float z, unsigned short lastIndex) {
+        osg::ref_ptr<osg::Geometry> g = new osg::Geometry;
+        osg::ref_ptr<osg::Vec3Array> v = new osg::Vec3Array;
+        v->push_back(osg::Vec3(-5, -5, 0));
+        v->push_back(osg::Vec3(5, -5, 0));
+        v->push_back(osg::Vec3(5, 5, z));
+        v->push_back(osg::Vec3(5, 5, z)); // duplicate vertex, zero-area triangle: fine
+        g->setVertexArray(v.get());
+        osg::ref_ptr<osg::DrawElementsUShort> e = new osg::DrawElementsUShort(GL_TRIANGLES);
+        for (unsigned short i : { 0, 1, 2, 2, 3, 2, 0, 1 }) e->push_back(i);
+        e->push_back(lastIndex);
+        g->addPrimitiveSet(e.get());
+        return g;
+    };
+    {
+        osg::ref_ptr<WaterSurface> w = new WaterSurface;
+        ScopedWarnCapture capture;
+        w->setMesh(mesh(0.0f, 3).get());
+        EXPECT_FALSE(w->usesGrid());
+        EXPECT_EQ(capture.str(), "");
+    }
+    const struct { float z; unsigned short last; const char* says; } bad[] = {
+        { kNaN, 3, "vertex coordinate" }, { kInf, 3, "vertex coordinate" }, { 1e30f, 3, "vertex coordinate" },
+        { 0.0f, 4, "indexes vertex 4 of 4" }, { 0.0f, 65535, "indexes vertex 65535" } };
+    for (const auto& b : bad) {
+        osg::ref_ptr<WaterSurface> w = new WaterSurface;
+        ScopedWarnCapture capture;
+        w->setMesh(mesh(b.z, b.last).get());
+        SCOPED_TRACE(capture.str());
+        EXPECT_TRUE(w->usesGrid());
+        EXPECT_EQ(countWarnings(capture.str()), 1u);
+        EXPECT_NE(capture.str().find(b.says), std::string::npos);
+        EXPECT_TRUE(std::isfinite(w->getMaxAmplitude()));
+    }
+}
