@@ -126,7 +126,9 @@ void CausticsCamera::update(const Frame& f)
 void CausticsCamera::cullPasses(osgUtil::CullVisitor& cv)
 {
     const unsigned int context = cv.getState() ? cv.getState()->getContextID() : 0u;
-    _depthDrawn = _depthDone[context] != _depthVersion;
+    // also when the map's GL texture was released (a view removed from the context releases the
+    // passes it culled last): a released texture holds nothing, so a map drawn once is drawn again
+    _depthDrawn = _depthDone[context] != _depthVersion || !_depth->getTextureObject(context);
     if (_depthDrawn) {
         accept(cv);        // pass 1: this camera, the sun's depth map
         _depthDone[context] = _depthVersion;
