@@ -58,16 +58,15 @@ std::vector<Wave> osgWater::defaultWaves()
 }
 
 WaterSurface::WaterSurface()
-    : _level(0.0), _size(100.0f), _center(0.0f, 0.0f), _resolution(49), _waves(defaultWaves()), _revision(0)
+    : _level(0.0), _size(100.0f), _center(0.0f, 0.0f), _resolution(49), _waves(defaultWaves()), _revision(0),
+      _stale(true)
 {
-    rebuild();
 }
 
 WaterSurface::WaterSurface(const WaterSurface& o, const osg::CopyOp& copyop)
     : osg::Geode(o, copyop), _level(o._level), _size(o._size), _center(o._center), _resolution(o._resolution),
-      _waves(o._waves), _userMesh(o._userMesh), _revision(0)
+      _waves(o._waves), _userMesh(o._userMesh), _revision(0), _stale(true)
 {
-    rebuild();
 }
 
 void WaterSurface::setLevel(double z)
@@ -206,6 +205,36 @@ osg::Vec3d WaterSurface::normal(double x, double y, double t) const
 void WaterSurface::rebuild()
 {
     ++_revision;
+    _stale = true;
+    dirtyBound();
+}
+
+osg::Geometry* WaterSurface::getGeometry()
+{
+    if (_stale) {
+        std::lock_guard<std::mutex> lock(_building);
+        if (_stale) {
+            build();
+            _stale = false;
+        }
+    }
+    return getNumDrawables() ? getDrawable(0)->asGeometry() : nullptr;
+}
+
+void WaterSurface::traverse(osg::NodeVisitor& nv)
+{
+    getGeometry();
+    osg::Geode::traverse(nv);
+}
+
+osg::BoundingSphere WaterSurface::computeBound() const
+{
+    getGeometry();
+    return osg::Geode::computeBound();
+}
+
+void WaterSurface::build()
+{
     removeDrawables(0, getNumDrawables());
     if (_userMesh.valid()) {
         addDrawable(_userMesh.get());

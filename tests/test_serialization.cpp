@@ -113,7 +113,7 @@ TEST(Serialization, ExpectedTextReadsBackIntoTheSameNode)
     EXPECT_FLOAT_EQ(f->getWaves()[0].wavelength, 5.0f);
     EXPECT_FLOAT_EQ(f->getWaves()[0].amplitude, 0.04f);
     // the grid is rebuilt from the parameters, never stored
-    EXPECT_EQ(f->getDrawable(0)->asGeometry()->getVertexArray()->getNumElements(), 33u * 33u);
+    EXPECT_EQ(f->getGeometry()->getVertexArray()->getNumElements(), 33u * 33u);
 }
 
 TEST(Serialization, OsgtAndOsgbRoundTripExactly)

@@ -8,12 +8,33 @@ using namespace osgWater;
 TEST(Surface, DefaultGridIsTheThesisMesh)
 {
     osg::ref_ptr<WaterSurface> s = new WaterSurface;
-    ASSERT_EQ(s->getNumDrawables(), 1u);
-    osg::Geometry* g = s->getDrawable(0)->asGeometry();
+    osg::Geometry* g = s->getGeometry();
     ASSERT_TRUE(g);
+    ASSERT_EQ(s->getNumDrawables(), 1u);
     EXPECT_EQ(g->getVertexArray()->getNumElements(), 2401u);                 // 49 x 49
     EXPECT_EQ(g->getPrimitiveSet(0)->getNumIndices() / 3, 4608u);            // 2 x 48 x 48
     EXPECT_TRUE(s->usesGrid());
+}
+
+// reading a file sets level, size, centre, resolution and waves one by one: the grid is built once,
+// when something needs it, and the bound and traversals always see the latest values
+TEST(Surface, GridIsBuiltWhenNeededFromTheLatestValues)
+{
+    osg::ref_ptr<WaterSurface> s = new WaterSurface;
+    s->setResolution(1025);
+    s->setSize(10.0f);
+    s->setLevel(5.0);
+    s->setCenter(osg::Vec2(100.0f, 0.0f));
+    s->setResolution(3);
+    EXPECT_EQ(s->getNumDrawables(), 0u); // nothing built yet, not even the 1025 x 1025 grid
+    const osg::BoundingSphere bs = s->getBound(); // the bound builds it
+    EXPECT_NEAR(bs.center().x(), 100.0f, 1e-4f);
+    EXPECT_NEAR(bs.center().z(), 5.0f, 1e-4f);
+    ASSERT_EQ(s->getNumDrawables(), 1u);
+    EXPECT_EQ(s->getDrawable(0)->asGeometry()->getVertexArray()->getNumElements(), 9u);
+    s->setLevel(-2.0); // a change after the build: the bound follows
+    EXPECT_NEAR(s->getBound().center().z(), -2.0f, 1e-4f);
+    EXPECT_NEAR(s->getGeometry()->getBoundingBox().center().z(), -2.0f, 1e-4f);
 }
 
 TEST(Surface, MaxAmplitudeBoundsTheHeight)
@@ -28,7 +49,7 @@ TEST(Surface, MaxAmplitudeBoundsTheHeight)
     EXPECT_LE(hmax, a + 1e-9);
     EXPECT_GT(hmax, 0.5 * a);
     // the drawable's bound includes the crests and troughs the vertex shader makes
-    const osg::BoundingBox& bb = s->getDrawable(0)->getBoundingBox();
+    const osg::BoundingBox& bb = s->getGeometry()->getBoundingBox();
     EXPECT_LE(bb.zMin(), 2.0f - a + 1e-5f);
     EXPECT_GE(bb.zMax(), 2.0f + a - 1e-5f);
 }
@@ -75,7 +96,7 @@ TEST(Surface, UserMeshReplacesTheGrid)
     g->addPrimitiveSet(new osg::DrawArrays(GL_TRIANGLES, 0, 3));
     s->setMesh(g.get());
     EXPECT_FALSE(s->usesGrid());
-    EXPECT_EQ(s->getDrawable(0), g.get());
+    EXPECT_EQ(s->getGeometry(), g.get());
     EXPECT_NEAR(s->getMaxAmplitude(), 0.2f, 1e-6f);
     s->setMesh(nullptr);
     EXPECT_TRUE(s->usesGrid());

@@ -69,12 +69,12 @@ TriangleMesh collectScene(const osgWater::WaterNode& water)
 TriangleMesh collectWater(const osgWater::WaterSurface& surface, double t)
 {
     TriangleMesh mesh;
-    for (unsigned int i = 0; i < surface.getNumDrawables(); ++i) {
+    if (const osg::Geometry* g = surface.getGeometry()) {
         osg::TriangleFunctor<Collect> f;
         f.mesh = &mesh;
         f.displace = surface.usesGrid() ? &surface : nullptr;
         f.t = t;
-        const_cast<osg::Drawable*>(surface.getDrawable(i))->accept(f);
+        const_cast<osg::Geometry*>(g)->accept(f);
     }
     return mesh;
 }
