@@ -3,6 +3,7 @@
 #include <osg/Notify>
 #include <fstream>
 #include <map>
+#include <mutex>
 #include <set>
 #include <sstream>
 
@@ -63,13 +64,43 @@ std::string expand(const std::string& name, std::set<std::string>& seen, bool em
     return out.str();
 }
 
+// Every WaterNode makes a dozen programs: the embedded sources are expanded once per process, and the
+// data path is only searched for overrides of the files that expansion used
+struct Expanded {
+    std::string source;
+    std::set<std::string> files;
+};
+
+const Expanded& embeddedExpansion(const std::string& name)
+{
+    static std::mutex mutex;
+    static std::map<std::string, Expanded> cache;
+    std::lock_guard<std::mutex> lock(mutex);
+    auto it = cache.find(name);
+    if (it != cache.end()) return it->second;
+    Expanded e;
+    e.files.insert(name);
+    e.source = expand(name, e.files, true, nullptr);
+    return cache.emplace(name, std::move(e)).first->second;
+}
+
+bool hasOverride(const std::string& name)
+{
+    return !osgDB::findDataFile("osgWater/shaders/" + name).empty() || !osgDB::findDataFile(name).empty();
+}
+
 }
 
 std::string osgWater::shaderSource(const std::string& name, bool embeddedOnly, std::string* overrideFile)
 {
+    const Expanded& e = embeddedExpansion(name);
+    if (embeddedOnly) return e.source;
+    bool overridden = false;
+    for (const std::string& file : e.files) overridden = overridden || hasOverride(file);
+    if (!overridden) return e.source;
     std::set<std::string> seen;
     seen.insert(name);
-    return expand(name, seen, embeddedOnly, overrideFile);
+    return expand(name, seen, false, overrideFile);
 }
 
 FallbackProgram::FallbackProgram(const std::string& name, const std::string& vert, const std::string& frag)
