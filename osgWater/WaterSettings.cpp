@@ -162,7 +162,9 @@ void WaterSettings::setSunDirection(const osg::Vec3& d)
         OSG_WARN << "osgWater::WaterSettings: sunDirection (" << d << ") is not a direction, using (" << n << ")"
                  << std::endl;
     }
-    n.normalize();
+    // a direction already of unit length is kept as it is: normalising again can flip its last bit,
+    // and a file written and read back would not be the same (found by the fuzz target)
+    if (std::fabs(n.length() - 1.0) > 1e-6) n.normalize();
     _sunDirection = osg::Vec3(n);
     touch();
 }

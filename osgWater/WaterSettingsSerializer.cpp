@@ -2,8 +2,10 @@
 // osgDB finds them for a class "osgWater::X" by loading the node kit library libosgWater (from
 // OSG_LIBRARY_PATH or the system library path), so stock osgviewer / osgconv read .osgt/.osgb.
 // Reading goes through the clamping setters: bad values are clamped with a warning. Text files
-// carry only the values that differ from the defaults, so missing fields take defaults.
+// carry only the values that differ from the defaults, so missing fields take defaults; numbers are
+// written with the digits they need to read back exactly (PreciseSerializer.h).
 #include <osgWater/WaterSettings>
+#include "PreciseSerializer.h"
 #include <osgDB/ObjectWrapper>
 #include <osgDB/InputStream>
 #include <osgDB/OutputStream>
@@ -14,30 +16,30 @@ using namespace osgWater;
 REGISTER_OBJECT_WRAPPER(osgWater_WaterSettings, new osgWater::WaterSettings, osgWater::WaterSettings,
                         "osg::Object osgWater::WaterSettings")
 {
-    ADD_FLOAT_SERIALIZER(AirIOR, 1.0f);
-    ADD_FLOAT_SERIALIZER(WaterIOR, 1.333f);
-    ADD_VEC3F_SERIALIZER(WaterColor, osg::Vec3f(0.0f, 0.2f, 0.1f));
-    ADD_FLOAT_SERIALIZER(Attenuation, 0.5f);
+    ADD_PRECISE_FLOAT_SERIALIZER(AirIOR, 1.0f);
+    ADD_PRECISE_FLOAT_SERIALIZER(WaterIOR, 1.333f);
+    ADD_PRECISE_VEC3F_SERIALIZER(WaterColor, osg::Vec3f(0.0f, 0.2f, 0.1f));
+    ADD_PRECISE_FLOAT_SERIALIZER(Attenuation, 0.5f);
     BEGIN_ENUM_SERIALIZER(FresnelModel, FRESNEL_SCHLICK);
         ADD_ENUM_VALUE(FRESNEL_SCHLICK);
         ADD_ENUM_VALUE(FRESNEL_POWER);
         ADD_ENUM_VALUE(FRESNEL_EXACT);
     END_ENUM_SERIALIZER();
-    ADD_FLOAT_SERIALIZER(FresnelExponent, 5.0f);
-    ADD_FLOAT_SERIALIZER(ReflectionScale, 1.0f);
+    ADD_PRECISE_FLOAT_SERIALIZER(FresnelExponent, 5.0f);
+    ADD_PRECISE_FLOAT_SERIALIZER(ReflectionScale, 1.0f);
     BEGIN_ENUM_SERIALIZER(RefractionLookup, ITERATIVE);
         ADD_ENUM_VALUE(ONE_STEP);
         ADD_ENUM_VALUE(ITERATIVE);
     END_ENUM_SERIALIZER();
     ADD_INT_SERIALIZER(SearchSteps, 3);
-    ADD_FLOAT_SERIALIZER(SearchTolerance, 0.01f);
-    ADD_FLOAT_SERIALIZER(OneStepScale, 1.0f);
-    ADD_FLOAT_SERIALIZER(OneStepMaxDepth, 20.0f);
-    ADD_FLOAT_SERIALIZER(UnderwaterLookupScale, 1.5f);
-    ADD_FLOAT_SERIALIZER(FovExtensionNear, 1.5f);
-    ADD_FLOAT_SERIALIZER(FovExtensionFar, 1.2f);
-    ADD_FLOAT_SERIALIZER(FovExtensionFalloff, 10.0f);
-    ADD_FLOAT_SERIALIZER(ClipOffset, 0.05f);
+    ADD_PRECISE_FLOAT_SERIALIZER(SearchTolerance, 0.01f);
+    ADD_PRECISE_FLOAT_SERIALIZER(OneStepScale, 1.0f);
+    ADD_PRECISE_FLOAT_SERIALIZER(OneStepMaxDepth, 20.0f);
+    ADD_PRECISE_FLOAT_SERIALIZER(UnderwaterLookupScale, 1.5f);
+    ADD_PRECISE_FLOAT_SERIALIZER(FovExtensionNear, 1.5f);
+    ADD_PRECISE_FLOAT_SERIALIZER(FovExtensionFar, 1.2f);
+    ADD_PRECISE_FLOAT_SERIALIZER(FovExtensionFalloff, 10.0f);
+    ADD_PRECISE_FLOAT_SERIALIZER(ClipOffset, 0.05f);
     ADD_INT_SERIALIZER(ReflectionTextureSize, 512);
     ADD_INT_SERIALIZER(RefractionTextureSize, 512);
     ADD_BOOL_SERIALIZER(RefractionCameraRotation, true);
@@ -46,7 +48,7 @@ REGISTER_OBJECT_WRAPPER(osgWater_WaterSettings, new osgWater::WaterSettings, osg
     ADD_BOOL_SERIALIZER(CausticsEnabled, true);
     ADD_INT_SERIALIZER(CausticsResolution, 256);
     ADD_INT_SERIALIZER(PhotonGridSize, 512);
-    ADD_FLOAT_SERIALIZER(CausticsIntensity, 1.0f);
+    ADD_PRECISE_FLOAT_SERIALIZER(CausticsIntensity, 1.0f);
     ADD_BOOL_SERIALIZER(CausticsFiltering, true);
     BEGIN_ENUM_SERIALIZER(CausticsGather, GATHER_AUTO);
         ADD_ENUM_VALUE(GATHER_AUTO);
@@ -59,12 +61,12 @@ REGISTER_OBJECT_WRAPPER(osgWater_WaterSettings, new osgWater::WaterSettings, osg
         ADD_ENUM_VALUE(UNDERWATER_THESIS);
     END_ENUM_SERIALIZER();
     ADD_BOOL_SERIALIZER(GlowEnabled, true);
-    ADD_FLOAT_SERIALIZER(GlowIntensity, 1.0f);
-    ADD_FLOAT_SERIALIZER(GlowRadius, 3.0f);
-    ADD_FLOAT_SERIALIZER(GlowResolution, 0.25f);
-    ADD_FLOAT_SERIALIZER(GlowExponent, 200.0f);
-    ADD_VEC3F_SERIALIZER(SunDirection, osgWater::WaterSettings::defaultSunDirection());
-    ADD_VEC3F_SERIALIZER(SunColor, osg::Vec3f(1.0f, 1.0f, 0.9f));
-    ADD_VEC3F_SERIALIZER(AmbientColor, osg::Vec3f(0.35f, 0.38f, 0.45f));
+    ADD_PRECISE_FLOAT_SERIALIZER(GlowIntensity, 1.0f);
+    ADD_PRECISE_FLOAT_SERIALIZER(GlowRadius, 3.0f);
+    ADD_PRECISE_FLOAT_SERIALIZER(GlowResolution, 0.25f);
+    ADD_PRECISE_FLOAT_SERIALIZER(GlowExponent, 200.0f);
+    ADD_PRECISE_VEC3F_SERIALIZER(SunDirection, osgWater::WaterSettings::defaultSunDirection());
+    ADD_PRECISE_VEC3F_SERIALIZER(SunColor, osg::Vec3f(1.0f, 1.0f, 0.9f));
+    ADD_PRECISE_VEC3F_SERIALIZER(AmbientColor, osg::Vec3f(0.35f, 0.38f, 0.45f));
 }
 

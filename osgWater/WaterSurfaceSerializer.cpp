@@ -1,5 +1,6 @@
 // osgDB wrapper of WaterSurface (see WaterSettingsSerializer.cpp for how osgDB finds it).
 #include <osgWater/WaterSurface>
+#include "PreciseSerializer.h"
 #include <osgDB/ObjectWrapper>
 #include <osgDB/InputStream>
 #include <osgDB/OutputStream>
@@ -29,10 +30,15 @@ bool readWaves(osgDB::InputStream& is, WaterSurface& s)
 bool writeWaves(osgDB::OutputStream& os, const WaterSurface& s)
 {
     const std::vector<Wave>& waves = s.getWaves();
+    int digits = 6;
+    for (const Wave& w : waves)
+        digits = std::max({ digits, detail::digitsFor(w.direction), detail::digitsFor(w.wavelength),
+                            detail::digitsFor(w.amplitude), detail::digitsFor(w.phase) });
+    os << detail::setPrecision(digits);
     os.writeSize(waves.size());
     os << os.BEGIN_BRACKET << std::endl;
     for (const Wave& w : waves) os << w.direction << w.wavelength << w.amplitude << w.phase << std::endl;
-    os << os.END_BRACKET << std::endl;
+    os << os.END_BRACKET << detail::restorePrecision << std::endl;
     return true;
 }
 
@@ -41,9 +47,9 @@ bool writeWaves(osgDB::OutputStream& os, const WaterSurface& s)
 REGISTER_OBJECT_WRAPPER(osgWater_WaterSurface, new osgWater::WaterSurface, osgWater::WaterSurface,
                         "osg::Object osg::Node osgWater::WaterSurface") // not osg::Geode: the grid is rebuilt, never stored
 {
-    ADD_DOUBLE_SERIALIZER(Level, 0.0);
-    ADD_FLOAT_SERIALIZER(Size, 100.0f);
-    ADD_VEC2F_SERIALIZER(Center, osg::Vec2f(0.0f, 0.0f));
+    ADD_PRECISE_DOUBLE_SERIALIZER(Level, 0.0);
+    ADD_PRECISE_FLOAT_SERIALIZER(Size, 100.0f);
+    ADD_PRECISE_VEC2F_SERIALIZER(Center, osg::Vec2f(0.0f, 0.0f));
     ADD_UINT_SERIALIZER(Resolution, 49u);
     ADD_USER_SERIALIZER(Waves);
     ADD_OBJECT_SERIALIZER(Mesh, osg::Geometry, NULL);

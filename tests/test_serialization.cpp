@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 #include <cmath>
 #include <fstream>
+#include <random>
 #include <sstream>
 
 using namespace osgWater;
@@ -128,6 +129,68 @@ TEST(Serialization, OsgtAndOsgbRoundTripExactly)
         EXPECT_EQ(w->getSettings()->getFresnelModel(), WaterSettings::FRESNEL_EXACT) << ext;
         EXPECT_EQ(w->getSurface()->getWaves().size(), 1u) << ext;
     }
+}
+
+// OSG writes text numbers with six digits: a 1234.5678901 m level came back as 1234.57, and a value a
+// hair from its default was written, read back as the default and dropped (found by the fuzz target)
+TEST(Serialization, OsgtKeepsEveryBitOfEveryNumber)
+{
+    osg::ref_ptr<WaterNode> w = pond();
+    WaterSettings* s = w->getSettings();
+    s->setAirIOR(std::nextafter(1.0f, 2.0f));
+    s->setWaterIOR(1.3330001f);
+    s->setSunDirection(osg::Vec3(0.123456789f, -0.3f, 0.7f));
+    s->setWaterColor(osg::Vec3(0.1f / 3.0f, 0.2f / 3.0f, 0.7f / 3.0f));
+    WaterSurface* f = w->getSurface();
+    f->setLevel(1234.5678901234567);
+    f->setCenter(osg::Vec2(1.0f / 3.0f, -2.0f / 7.0f));
+    Wave wave = f->getWaves()[0];
+    wave.phase = 0.123456789f;
+    wave.amplitude = 0.04f / 3.0f;
+    f->setWaves({ wave });
+    ASSERT_TRUE(osgDB::writeNodeFile(*w, tmp("bits.osgt")));
+    osg::ref_ptr<WaterNode> back = readWater(tmp("bits.osgt"));
+    ASSERT_TRUE(back.valid());
+    const WaterSettings* t = back->getSettings();
+    EXPECT_EQ(t->getAirIOR(), s->getAirIOR());
+    EXPECT_EQ(t->getWaterIOR(), s->getWaterIOR());
+    EXPECT_EQ(t->getSunDirection(), s->getSunDirection());
+    EXPECT_EQ(t->getWaterColor(), s->getWaterColor());
+    const WaterSurface* g = back->getSurface();
+    EXPECT_EQ(g->getLevel(), f->getLevel());
+    EXPECT_EQ(g->getCenter(), f->getCenter());
+    ASSERT_EQ(g->getWaves().size(), 1u);
+    EXPECT_EQ(g->getWaves()[0].phase, wave.phase);
+    EXPECT_EQ(g->getWaves()[0].amplitude, wave.amplitude);
+    // and the file stays readable: the common values keep their short form
+    const std::string text = slurp(tmp("bits.osgt"));
+    EXPECT_NE(text.find("WaterIOR 1.3330001 "), std::string::npos);
+    EXPECT_NE(text.find("Resolution 33 "), std::string::npos);
+    EXPECT_NE(text.find("Size 60 "), std::string::npos);
+}
+
+// OSG's own text parser misses the last bit of most doubles: levels are read exactly
+TEST(Serialization, OsgtKeepsEveryLevelExactly)
+{
+    std::mt19937_64 random(7);
+    std::uniform_real_distribution<double> mantissa(1.0, 10.0);
+    int wrong = 0;
+    for (double scale : { 1e-300, 1e-6, 1e-3, 1.0, 1e3, 1e6 })
+        for (int i = 0; i < 20; ++i) {
+            osg::ref_ptr<WaterNode> w = new WaterNode;
+            const double level = (i % 2 ? -1.0 : 1.0) * mantissa(random) * scale;
+            w->getSurface()->setLevel(level);
+            std::ostringstream out;
+            osg::ref_ptr<osgDB::Options> opts = new osgDB::Options;
+            opts->setPluginStringData("fileType", "Ascii");
+            osgDB::ReaderWriter* rw = osgDB::Registry::instance()->getReaderWriterForExtension("osgt");
+            ASSERT_TRUE(rw->writeNode(*w, out, opts.get()).success());
+            std::istringstream in(out.str());
+            osg::ref_ptr<WaterNode> back = dynamic_cast<WaterNode*>(rw->readNode(in, nullptr).getNode());
+            ASSERT_TRUE(back.valid());
+            if (back->getSurface()->getLevel() != level) ++wrong;
+        }
+    EXPECT_EQ(wrong, 0) << "of 120 levels";
 }
 
 TEST(Serialization, MissingFieldsTakeDefaults)
