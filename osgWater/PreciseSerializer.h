@@ -41,7 +41,9 @@ public:
                 if (is.matchString(this->_name)) {
                     std::string text;
                     is >> text;
-                    (static_cast<C&>(obj).*(this->_setter))(parseDouble(text));
+                    const Base<C, P>& base = *this;
+                    C& object = static_cast<C&>(obj);
+                    (object.*(base._setter))(parseDouble(text));
                 }
                 return true;
             }
@@ -51,7 +53,9 @@ public:
     bool write(osgDB::OutputStream& os, const osg::Object& obj) override
     {
         if (os.isBinary()) return Base<C, P>::write(os, obj);
-        const P value = (static_cast<const C&>(obj).*(this->_getter))();
+        const Base<C, P>& base = *this; // GCC 12's UBSan misreads a dependent base's member as at 0
+        const C& object = static_cast<const C&>(obj);
+        const P value = (object.*(base._getter))();
         if (value == this->_defaultValue) return true; // text files leave defaults out, as OSG's own do
         // the manipulators mid-line: at the start of a line OSG would indent for them
         os << os.PROPERTY(this->_name.c_str()) << setPrecision(digitsFor(value)) << value << restorePrecision
