@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
 # Installs what osgWater needs on Debian 12 (bookworm), from Debian's own packages.
+# `install-deps.sh fuzz` adds clang and its libFuzzer runtime (scripts/fuzz.sh).
 set -euo pipefail
 PACKAGES=(
   cmake g++ make pkg-config
@@ -9,6 +10,7 @@ PACKAGES=(
   libembree-dev nlohmann-json3-dev gnuplot-nox  # benchmark: exact reference, results.json, plot
   xvfb xauth libgl1-mesa-dri             # headless rendering: Xvfb + Mesa llvmpipe
 )
+if [ "${1:-}" = "fuzz" ]; then PACKAGES+=(clang libclang-rt-14-dev); fi
 missing=()
 for p in "${PACKAGES[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
