@@ -170,11 +170,12 @@ void WaterNode::cull(osgUtil::CullVisitor& cv)
 
     // 6. glow of the sun's highlight, when it can be in view (never over debug outputs: they are
     //    data, and the glow would add light to coordinates)
-    if (waterVisible && _debug == DEBUG_NONE) cullGlow(cv, passes, ctx);
+    if (waterVisible && _debug == DEBUG_NONE) cullGlow(cv, passes, ctx, sup);
     else passes->setGlowDrawn(false);
 }
 
-void WaterNode::cullGlow(osgUtil::CullVisitor& cv, ViewPasses* passes, const PassContext& ctx)
+void WaterNode::cullGlow(osgUtil::CullVisitor& cv, ViewPasses* passes, const PassContext& ctx,
+                         const CausticsSupport& sup)
 {
     const osg::Viewport* vp = cv.getViewport();
     if (!vp || !GlowPasses::highlightInView(ctx, *_surface)) {
@@ -182,7 +183,6 @@ void WaterNode::cullGlow(osgUtil::CullVisitor& cv, ViewPasses* passes, const Pas
         return;
     }
     const double f = _settings->getGlowResolution();
-    const CausticsSupport sup = support(cv.getState() ? cv.getState()->getContextID() : 0u);
     const int w = fitTexture("glow target width", std::max(1, int(std::lround(vp->width() * f))), sup);
     const int h = fitTexture("glow target height", std::max(1, int(std::lround(vp->height() * f))), sup);
     GlowPasses* glow = passes->getOrCreateGlow(w, h, sup.floatTargets, this, _states.getSceneStateSet(),

@@ -1,4 +1,5 @@
 #include <osgWater/WaterSettings>
+#include "Clamp.h"
 #include <osg/Notify>
 #include <osg/Math>
 #include <osg/io_utils>
@@ -9,32 +10,12 @@ using namespace osgWater;
 
 namespace {
 
-// Clamp helpers: NaN falls back to the default, anything else to [lo, hi]; both warn.
+const char* const kOwner = "osgWater::WaterSettings";
 float clampOr(const char* name, float v, float lo, float hi, float fallback)
 {
-    if (std::isnan(v)) {
-        OSG_WARN << "osgWater::WaterSettings: " << name << " is NaN, using " << fallback << std::endl;
-        return fallback;
-    }
-    if (v < lo || v > hi) {
-        float c = std::min(std::max(v, lo), hi);
-        OSG_WARN << "osgWater::WaterSettings: " << name << " = " << v << " out of [" << lo << ", " << hi
-                 << "], clamped to " << c << std::endl;
-        return c;
-    }
-    return v;
+    return detail::clampOr(kOwner, name, v, lo, hi, fallback);
 }
-
-int clampInt(const char* name, int v, int lo, int hi)
-{
-    if (v < lo || v > hi) {
-        int c = std::min(std::max(v, lo), hi);
-        OSG_WARN << "osgWater::WaterSettings: " << name << " = " << v << " out of [" << lo << ", " << hi
-                 << "], clamped to " << c << std::endl;
-        return c;
-    }
-    return v;
-}
+int clampInt(const char* name, int v, int lo, int hi) { return detail::clampInt(kOwner, name, v, lo, hi); }
 
 osg::Vec3 clampColor(const char* name, const osg::Vec3& c, const osg::Vec3& fallback, float hi)
 {

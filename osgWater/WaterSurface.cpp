@@ -1,4 +1,5 @@
 #include <osgWater/WaterSurface>
+#include "Clamp.h"
 #include <osg/Notify>
 #include <algorithm>
 #include <cmath>
@@ -125,16 +126,8 @@ void WaterSurface::setWaves(const std::vector<Wave>& waves)
         if (std::fabs(len - 1.0) > 1.0e-6)
             w.direction.set(float(w.direction.x() / len), float(w.direction.y() / len));
         // a wave longer than 1e6 m or higher than 1e3 m is no lake wave: both clamped
-        const float wl = std::isnan(w.wavelength) ? 4.0f : std::min(std::max(w.wavelength, 0.01f), 1.0e6f);
-        if (wl != w.wavelength) {
-            OSG_WARN << "osgWater::WaterSurface: wave wavelength " << w.wavelength << " out of [0.01, 1e6], using " << wl << std::endl;
-            w.wavelength = wl;
-        }
-        const float a = std::isnan(w.amplitude) ? 0.0f : std::min(std::max(w.amplitude, 0.0f), 1.0e3f);
-        if (a != w.amplitude) {
-            OSG_WARN << "osgWater::WaterSurface: wave amplitude " << w.amplitude << " out of [0, 1e3], using " << a << std::endl;
-            w.amplitude = a;
-        }
+        w.wavelength = detail::clampOr("osgWater::WaterSurface", "wave wavelength", w.wavelength, 0.01f, 1.0e6f, 4.0f);
+        w.amplitude = detail::clampOr("osgWater::WaterSurface", "wave amplitude", w.amplitude, 0.0f, 1.0e3f, 0.0f);
         if (!std::isfinite(w.phase)) {
             OSG_WARN << "osgWater::WaterSurface: wave phase " << w.phase << " is not finite, using 0" << std::endl;
             w.phase = 0.0f;
