@@ -1,5 +1,6 @@
 #include <osgWater/Shaders>
 #include <osgDB/FileUtils>
+#include <osgDB/FileNameUtils>
 #include <osg/Notify>
 #include <fstream>
 #include <map>
@@ -23,12 +24,24 @@ const std::string& embedded(const std::string& name)
     return none;
 }
 
+// osgWater/shaders/<name> in a directory of the OSG data path, or "". Never a bare name and never
+// the working directory: osgDB::findDataFile also tries the name as given, relative to the working
+// directory, where any project may keep a scene.frag of its own.
+std::string overridePath(const std::string& name)
+{
+    for (const std::string& dir : osgDB::getDataFilePathList()) {
+        if (dir.empty()) continue; // an empty entry means the working directory
+        const std::string path = osgDB::concatPaths(dir, "osgWater/shaders/" + name);
+        if (osgDB::fileType(path) == osgDB::REGULAR_FILE) return path;
+    }
+    return std::string();
+}
+
 // the override file on the data path (its path in `from`), else the embedded copy
 std::string rawSource(const std::string& name, bool embeddedOnly, std::string* from)
 {
     if (!embeddedOnly) {
-        std::string path = osgDB::findDataFile("osgWater/shaders/" + name);
-        if (path.empty()) path = osgDB::findDataFile(name);
+        const std::string path = overridePath(name);
         if (!path.empty()) {
             std::ifstream in(path.c_str());
             std::stringstream ss;
@@ -86,7 +99,7 @@ const Expanded& embeddedExpansion(const std::string& name)
 
 bool hasOverride(const std::string& name)
 {
-    return !osgDB::findDataFile("osgWater/shaders/" + name).empty() || !osgDB::findDataFile(name).empty();
+    return !overridePath(name).empty();
 }
 
 }
@@ -113,20 +126,29 @@ FallbackProgram::FallbackProgram(const std::string& name, const std::string& ver
     fs->setName(frag);
     addShader(vs);
     addShader(fs);
+    _mayFallBack = !_overrideFile.empty();
 }
 
 FallbackProgram::FallbackProgram(const FallbackProgram& o, const osg::CopyOp& copyop)
-    : osg::Program(o, copyop), _vert(o._vert), _frag(o._frag), _overrideFile(o._overrideFile)
+    : osg::Program(o, copyop), _vert(o._vert), _frag(o._frag), _overrideFile(o.getOverrideFile())
 {
+    _mayFallBack = !_overrideFile.empty();
+}
+
+std::string FallbackProgram::getOverrideFile() const
+{
+    OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_fallbackMutex);
+    return _overrideFile;
 }
 
 void FallbackProgram::apply(osg::State& state) const
 {
     osg::Program::apply(state);
-    if (_overrideFile.empty()) return; // the embedded shaders are tested: nothing to fall back to
+    if (!_mayFallBack) return; // the embedded shaders are tested: nothing to fall back to
     const PerContextProgram* pcp = getPCP(state);
     if (!pcp || pcp->isLinked()) return;
     {
+        // draw threads of several contexts may get here at once
         OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_fallbackMutex);
         if (_overrideFile.empty()) return; // another context fell back meanwhile
         OSG_WARN << "osgWater: program " << getName() << " does not compile or link with the override "
@@ -136,6 +158,7 @@ void FallbackProgram::apply(osg::State& state) const
         self->getShader(1)->setShaderSource(shaderSource(_frag, true));
         self->dirtyProgram();
         self->_overrideFile.clear();
+        self->_mayFallBack = false;
     }
     osg::Program::apply(state);
 }
