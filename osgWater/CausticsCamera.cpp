@@ -5,6 +5,7 @@
 #include <osgUtil/CullVisitor>
 #include <algorithm>
 #include <cstdlib>
+#include <osgWater/Shaders>
 
 using namespace osgWater;
 
@@ -23,19 +24,15 @@ CausticsSupport CausticsSupport::detect(unsigned int contextID)
     return s;
 }
 
-WaterSettings::CausticsGather CausticsSupport::resolve(WaterSettings::CausticsGather wanted) const
+bool CausticsSupport::supports(WaterSettings::CausticsGather g) const
 {
-    if (!floatTargets) return WaterSettings::GATHER_CPU; // photons need float (u, v) on the GPU paths
-    const WaterSettings::CausticsGather order[] = { WaterSettings::GATHER_POINTS_TEXTURE,
-                                                    WaterSettings::GATHER_POINTS_COPY, WaterSettings::GATHER_CPU };
-    auto supported = [this](WaterSettings::CausticsGather g) {
-        return g == WaterSettings::GATHER_CPU || (g == WaterSettings::GATHER_POINTS_COPY && pixelBuffers)
-               || (g == WaterSettings::GATHER_POINTS_TEXTURE && vertexTextures);
-    };
-    if (wanted != WaterSettings::GATHER_AUTO && supported(wanted)) return wanted;
-    for (WaterSettings::CausticsGather g : order)
-        if (supported(g)) return g;
-    return WaterSettings::GATHER_CPU;
+    switch (g) {
+    case WaterSettings::GATHER_CPU: return true;
+    // the GPU paths need float (u, v) photons
+    case WaterSettings::GATHER_POINTS_COPY: return floatTargets && pixelBuffers;
+    case WaterSettings::GATHER_POINTS_TEXTURE: return floatTargets && vertexTextures;
+    default: return false;
+    }
 }
 
 const char* CausticsCamera::gatherName(WaterSettings::CausticsGather g)
@@ -50,12 +47,14 @@ const char* CausticsCamera::gatherName(WaterSettings::CausticsGather g)
 
 CausticsCamera::CausticsCamera(osg::Group* scene, osg::StateSet* sceneState, osg::StateSet* waterState,
                                int resolution, int gridSize, bool floatTargets)
-    : PassCamera(scene, sceneState, gridSize), _floatTargets(floatTargets)
+    : PassCamera(scene, { sceneState, depthOnlyState() }, gridSize, gridSize, PASS_SUN_DEPTH), _floatTargets(floatTargets)
 {
     setName("osgWater.CausticsCamera");
-    setRenderOrder(osg::Camera::PRE_RENDER, -3); // first: the photons search this depth map
-    setClearColor(osg::Vec4(0.0f, 0.0f, 0.0f, 0.0f));
-    _depth = makeTexture(gridSize, GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT, GL_FLOAT, false);
+    // depth only: no colour target, no shading
+    setClearMask(GL_DEPTH_BUFFER_BIT);
+    setDrawBuffer(GL_NONE);
+    setReadBuffer(GL_NONE);
+    _depth = makeTargetTexture(gridSize, GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT, GL_FLOAT, false);
     _depth->setName("osgWater.sunDepth");
     attach(osg::Camera::DEPTH_BUFFER, _depth.get());
 
@@ -67,6 +66,24 @@ CausticsCamera::CausticsCamera(osg::Group* scene, osg::StateSet* sceneState, osg
     // the per-frame passes (the depth map is redrawn only on change); set once: draw callbacks
     // must not change while drawing
     _timer->attach(_photons.get(), _gather.get());
+}
+
+osg::StateSet* CausticsCamera::depthOnlyState()
+{
+    osg::StateSet* ss = new osg::StateSet; // held by the camera's draw list
+    ss->setName("osgWater.depthOnly");
+    ss->setAttribute(createProgram("osgWater.depth", "depth.vert", "depth.frag"));
+    return ss;
+}
+
+osg::Camera* CausticsCamera::getPassCamera(PassId pass)
+{
+    switch (pass) {
+    case PASS_SUN_DEPTH: return this;
+    case PASS_PHOTONS: return _photons.get();
+    case PASS_GATHER: return _gather.get();
+    default: return nullptr;
+    }
 }
 
 bool CausticsCamera::matches(int resolution, int gridSize, bool floatTargets) const
@@ -83,6 +100,7 @@ bool CausticsCamera::needed(const Frame& f)
 
 void CausticsCamera::update(const Frame& f)
 {
+    _depthDrawn = false; // a new frame
     // what the sun sees of the water volume: the water's extent (cut to the scene's) from the
     // deepest scene point up to just above the crests
     osg::BoundingBox box = f.water;
@@ -102,9 +120,13 @@ void CausticsCamera::update(const Frame& f)
         _depthProj = proj;
         ++_depthVersion;
     }
-    setMatrices(view, proj, f.towardsSun);
+    setViewMatrix(view);
+    setProjectionMatrix(proj);
+    SceneLighting depthPass; // the bundle every scene pass gets: here only its clip plane is used
+    depthPass.towardsSun = f.towardsSun;
+    depthPass.level = f.level;
+    applyLighting(depthPass);
     _photons->setSun(f.surface, view, proj, _depth.get());
-    _gather->setMethod(f.gather);
 
     double l, r, b, t, n, fa;
     proj.getOrtho(l, r, b, t, n, fa);
@@ -123,28 +145,50 @@ void CausticsCamera::update(const Frame& f)
     }
 }
 
-void CausticsCamera::cullPasses(osgUtil::CullVisitor& cv)
+bool CausticsCamera::depthStale(unsigned int context) const
 {
-    const unsigned int context = cv.getState() ? cv.getState()->getContextID() : 0u;
     // also when the map's GL texture was released (a view removed from the context releases the
     // passes it culled last): a released texture holds nothing, so a map drawn once is drawn again
-    _depthDrawn = _depthDone[context] != _depthVersion || !_depth->getTextureObject(context);
-    if (_depthDrawn) {
-        accept(cv);        // pass 1: this camera, the sun's depth map
-        _depthDone[context] = _depthVersion;
+    auto done = _depthDone.find(context);
+    return done == _depthDone.end() || done->second != _depthVersion || !_depth->getTextureObject(context);
+}
+
+void CausticsCamera::markDepthDrawn(unsigned int context)
+{
+    _depthDone[context] = _depthVersion;
+    _depthDrawn = true;
+}
+
+WaterSettings::CausticsGather CausticsCamera::resolveGather(WaterSettings::CausticsGather wanted,
+                                                            const CausticsSupport& support)
+{
+    WaterSettings::CausticsGather g = wanted;
+    if (wanted == WaterSettings::GATHER_AUTO) g = autoGather(support);
+    else if (!support.supports(wanted)) {
+        const WaterSettings::CausticsGather order[] = { WaterSettings::GATHER_POINTS_TEXTURE,
+                                                        WaterSettings::GATHER_POINTS_COPY, WaterSettings::GATHER_CPU };
+        for (WaterSettings::CausticsGather o : order)
+            if (support.supports(o)) { g = o; break; }
     }
-    _photons->accept(cv);  // pass 2
-    _gather->accept(cv);   // pass 3
+    if (g != _activeGather) {
+        if (wanted != WaterSettings::GATHER_AUTO && g != wanted)
+            OSG_WARN << "osgWater: caustics gather " << gatherName(wanted) << " is not supported by this context, using "
+                     << gatherName(g) << std::endl;
+        if (!support.floatTargets)
+            OSG_WARN << "osgWater: no float render targets, caustics fall back to the CPU gather" << std::endl;
+        OSG_DEBUG << "osgWater: caustics gather: " << gatherName(g) << std::endl;
+        _activeGather = g;
+    }
+    _gather->setMethod(g);
+    return g;
 }
 
 WaterSettings::CausticsGather CausticsCamera::autoGather(const CausticsSupport& support)
 {
     std::vector<WaterSettings::CausticsGather> candidates;
-    if (support.floatTargets) {
-        if (support.vertexTextures) candidates.push_back(WaterSettings::GATHER_POINTS_TEXTURE);
-        if (support.pixelBuffers) candidates.push_back(WaterSettings::GATHER_POINTS_COPY);
-    }
-    candidates.push_back(WaterSettings::GATHER_CPU);
+    for (WaterSettings::CausticsGather g : { WaterSettings::GATHER_POINTS_TEXTURE, WaterSettings::GATHER_POINTS_COPY,
+                                             WaterSettings::GATHER_CPU })
+        if (support.supports(g)) candidates.push_back(g);
     if (_autoChoice >= 0 && _autoChoice < int(candidates.size())) return candidates[_autoChoice];
     if (candidates.size() == 1) return candidates[0];
 
@@ -172,4 +216,20 @@ WaterSettings::CausticsGather CausticsCamera::autoGather(const CausticsSupport& 
         OSG_NOTICE << " " << gatherName(candidates[i]) << " " << median(_trialMs[i]) << " ms";
     OSG_NOTICE << std::endl;
     return candidates[_autoChoice];
+}
+
+void CausticsCamera::resizeGLObjectBuffers(unsigned int maxSize)
+{
+    PassCamera::resizeGLObjectBuffers(maxSize);
+    resizePassGLObjectBuffers(_photons.get(), maxSize);
+    _gather->resizeGLObjectBuffers(maxSize);
+    resizePassGLObjectBuffers(_gather.get(), maxSize);
+}
+
+void CausticsCamera::releaseGLObjects(osg::State* state) const
+{
+    PassCamera::releaseGLObjects(state);
+    releasePassGLObjects(_photons.get(), state);
+    _gather->releaseGLObjects(state); // its point clouds and CPU gather are its children
+    releasePassGLObjects(_gather.get(), state);
 }

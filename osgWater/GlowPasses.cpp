@@ -10,47 +10,11 @@
 #include <algorithm>
 #include <cmath>
 
-namespace osgWater {
-
-// Draws the highlight pass: the water's scene as depth only (it hides the highlight where it is
-// in front of the water), then the surface with the highlight program.
-class GlowCullCallback : public osg::NodeCallback
-{
-public:
-    explicit GlowCullCallback(GlowPasses* g) : _glow(g) {}
-    void operator()(osg::Node*, osg::NodeVisitor* nv) override
-    {
-        osgUtil::CullVisitor* cv = nv->asCullVisitor();
-        if (!cv || !_glow->_surface.valid()) return;
-        cv->pushStateSet(_glow->_sceneState);
-        cv->pushStateSet(_glow->_occluderState.get());
-        _glow->_scene->osg::Group::traverse(*nv);
-        cv->popStateSet();
-        cv->popStateSet();
-        cv->pushStateSet(_glow->_waterState);
-        cv->pushStateSet(_glow->_glowState.get());
-        _glow->_surface->accept(*nv);
-        cv->popStateSet();
-        cv->popStateSet();
-    }
-private:
-    GlowPasses* _glow; // owns the camera this callback sits on
-};
-
-}
-
 using namespace osgWater;
 
 namespace {
 
 const int kMaxTaps = 32;
-
-struct DrawChild : public osg::NodeCallback
-{
-    explicit DrawChild(osg::Node* n) : node(n) {}
-    void operator()(osg::Node*, osg::NodeVisitor* nv) override { node->accept(*nv); }
-    osg::ref_ptr<osg::Node> node;
-};
 
 osg::Texture2D* glowTarget(int w, int h, bool floatTarget, const char* name)
 {
@@ -68,8 +32,7 @@ osg::Texture2D* glowTarget(int w, int h, bool floatTarget, const char* name)
 
 GlowPasses::GlowPasses(osg::Group* scene, osg::StateSet* sceneState, osg::StateSet* waterState, int width,
                        int height, bool floatTargets)
-    : _width(std::max(width, 1)), _height(std::max(height, 1)), _float(floatTargets), _scene(scene),
-      _sceneState(sceneState), _waterState(waterState)
+    : _width(std::max(width, 1)), _height(std::max(height, 1)), _float(floatTargets)
 {
     _highlightTex = glowTarget(_width, _height, _float, "osgWater.glowHighlight");
     _blurTex[0] = glowTarget(_width, _height, _float, "osgWater.glowBlurH");
@@ -77,11 +40,10 @@ GlowPasses::GlowPasses(osg::Group* scene, osg::StateSet* sceneState, osg::StateS
 
     _highlight = new osg::Camera;
     _highlight->setName("osgWater.GlowCamera");
-    setUpPassTarget(_highlight.get(), _width, _height, 1);
+    setUpPassTarget(_highlight.get(), _width, _height, PASS_GLOW_HIGHLIGHT);
     _highlight->setClearColor(osg::Vec4(0.0f, 0.0f, 0.0f, 0.0f));
     _highlight->attach(osg::Camera::COLOR_BUFFER, _highlightTex.get());
     _highlight->attach(osg::Camera::DEPTH_BUFFER, GL_DEPTH_COMPONENT24);
-    _highlight->setCullCallback(new GlowCullCallback(this));
 
     _occluderState = new osg::StateSet;
     _occluderState->setAttribute(new osg::ColorMask(false, false, false, false));
@@ -92,49 +54,58 @@ GlowPasses::GlowPasses(osg::Group* scene, osg::StateSet* sceneState, osg::StateS
     _glowState->addUniform(new osg::Uniform("osgWater_GlowColor", osg::Vec3f(1.0f, 1.0f, 1.0f)));
     _glowState->addUniform(new osg::Uniform("osgWater_GlowExponent", 200.0f));
     _glowState->setDataVariance(osg::Object::DYNAMIC);
+    // the water's scene as depth only (it hides the highlight where it is in front of the water),
+    // then the surface with the highlight program (set by update())
+    _highlightDraw = new DrawNodes;
+    _highlightDraw->addChildrenOf(scene, { sceneState, _occluderState.get() });
+    _highlightDraw->addNode(nullptr, { waterState, _glowState.get() });
+    _highlight->setCullCallback(_highlightDraw.get());
 
     _blurState = new osg::StateSet;
     _blurState->setAttribute(createProgram("osgWater.glowBlur", "screen.vert", "blur.frag"));
-    _blurState->addUniform(new osg::Uniform("osgWater_GlowInput", 0));
+    _blurState->addUniform(new osg::Uniform("osgWater_GlowInput", int(UNIT_PASS_INPUT)));
     _blurState->addUniform(new osg::Uniform(osg::Uniform::FLOAT, "osgWater_GlowWeights", kMaxTaps + 1));
     _blurState->addUniform(new osg::Uniform("osgWater_GlowTaps", 0));
     _blurState->setMode(GL_CULL_FACE, osg::StateAttribute::OFF);
     _blurState->setAttributeAndModes(new osg::Depth(osg::Depth::ALWAYS, 0.0, 1.0, false));
     _blurState->setDataVariance(osg::Object::DYNAMIC);
-    _blur[0] = makeBlurCamera(_highlightTex.get(), _blurTex[0].get(), osg::Vec2f(1.0f / _width, 0.0f), 2);
-    _blur[1] = makeBlurCamera(_blurTex[0].get(), _blurTex[1].get(), osg::Vec2f(0.0f, 1.0f / _height), 3);
+    _blur[0] = makeBlurCamera(_highlightTex.get(), _blurTex[0].get(), osg::Vec2f(1.0f / _width, 0.0f), PASS_GLOW_BLUR_H);
+    _blur[1] = makeBlurCamera(_blurTex[0].get(), _blurTex[1].get(), osg::Vec2f(0.0f, 1.0f / _height), PASS_GLOW_BLUR_V);
 
     _composite = makeScreenTriangle(-1.0f, "osgWater.glowComposite");
     osg::StateSet* c = _composite->getOrCreateStateSet();
     c->setAttribute(createProgram("osgWater.glowAdd", "screen.vert", "glowadd.frag"));
-    c->setTextureAttribute(0, _blurTex[1].get());
-    c->addUniform(new osg::Uniform("osgWater_GlowTex", 0));
+    c->setTextureAttribute(UNIT_PASS_INPUT, _blurTex[1].get());
+    c->addUniform(new osg::Uniform("osgWater_GlowTex", int(UNIT_PASS_INPUT)));
     c->addUniform(new osg::Uniform("osgWater_GlowIntensity", 1.0f));
     c->setAttributeAndModes(new osg::BlendFunc(GL_ONE, GL_ONE));
     c->setAttributeAndModes(new osg::Depth(osg::Depth::ALWAYS, 0.0, 1.0, false));
     c->setMode(GL_CULL_FACE, osg::StateAttribute::OFF);
-    c->setRenderBinDetails(21, "RenderBin"); // after the near-plane cap
+    c->setRenderBinDetails(renderBin(PASS_GLOW_COMPOSITE), "RenderBin");
     c->setDataVariance(osg::Object::DYNAMIC);
 }
 
-osg::Camera* GlowPasses::makeBlurCamera(osg::Texture2D* input, osg::Texture2D* output, const osg::Vec2f& step, int order)
+osg::Camera* GlowPasses::makeBlurCamera(osg::Texture2D* input, osg::Texture2D* output, const osg::Vec2f& step, PassId pass)
 {
     osg::Camera* cam = new osg::Camera;
     cam->setName("osgWater.GlowBlur");
-    setUpPassTarget(cam, _width, _height, order);
+    setUpPassTarget(cam, _width, _height, pass);
     cam->setClearMask(0); // every texel is written
     cam->attach(osg::Camera::COLOR_BUFFER, output);
     cam->setViewMatrix(osg::Matrixd());
     cam->setProjectionMatrix(osg::Matrixd());
     osg::Geode* tri = makeScreenTriangle(-1.0f, "osgWater.glowBlurTriangle");
     osg::StateSet* ss = tri->getOrCreateStateSet();
-    ss->setTextureAttribute(0, input);
+    ss->setTextureAttribute(UNIT_PASS_INPUT, input);
     ss->addUniform(new osg::Uniform("osgWater_GlowStep", step));
     // both blur passes share the program and the weights' uniforms (merged, not replaced: the
     // camera's own StateSet carries its viewport)
     cam->getOrCreateStateSet()->merge(*_blurState);
+    cam->getStateSet()->setDataVariance(osg::Object::DYNAMIC); // the weights follow the settings
     // drawn from a cull callback, as the other passes draw their scenes
-    cam->setCullCallback(new DrawChild(tri));
+    osg::ref_ptr<DrawNodes> draw = new DrawNodes;
+    draw->addNode(tri, {});
+    cam->setCullCallback(draw.get());
     return cam;
 }
 
@@ -188,6 +159,7 @@ bool GlowPasses::highlightInView(const PassContext& ctx, const WaterSurface& sur
 void GlowPasses::update(const PassContext& ctx, WaterSurface* surface)
 {
     _surface = surface;
+    _highlightDraw->setNode(1, surface);
     const WaterSettings& s = *ctx.settings;
     osg::BoundingSphere bs = ctx.scene;
     bs.expandBy(surface->getBound());
@@ -214,10 +186,24 @@ void GlowPasses::setBlurWeights(const std::vector<float>& w)
     _blurState->getUniform("osgWater_GlowTaps")->set(int(w.size()) - 1);
 }
 
-void GlowPasses::cull(osgUtil::CullVisitor& cv)
+osg::Camera* GlowPasses::getPassCamera(PassId pass) const
 {
-    _highlight->accept(cv);
-    _blur[0]->accept(cv);
-    _blur[1]->accept(cv);
-    _composite->accept(cv);
+    switch (pass) {
+    case PASS_GLOW_HIGHLIGHT: return _highlight.get();
+    case PASS_GLOW_BLUR_H: return _blur[0].get();
+    case PASS_GLOW_BLUR_V: return _blur[1].get();
+    default: return nullptr;
+    }
+}
+
+void GlowPasses::resizeGLObjectBuffers(unsigned int maxSize)
+{
+    for (osg::Camera* c : { _highlight.get(), _blur[0].get(), _blur[1].get() }) resizePassGLObjectBuffers(c, maxSize);
+    _composite->resizeGLObjectBuffers(maxSize);
+}
+
+void GlowPasses::releaseGLObjects(osg::State* state) const
+{
+    for (const osg::Camera* c : { _highlight.get(), _blur[0].get(), _blur[1].get() }) releasePassGLObjects(c, state);
+    _composite->releaseGLObjects(state);
 }

@@ -1,38 +1,16 @@
 #include <osgWater/PhotonCamera>
 #include <osgWater/Shaders>
 #include <osgWater/PassCamera>
-#include <osgUtil/CullVisitor>
+#include <osgWater/DrawNodes>
 
 using namespace osgWater;
-
-namespace {
-
-// The camera has no children: it draws the water's surface under the water and photon states.
-class PhotonCullCallback : public osg::NodeCallback
-{
-public:
-    void operator()(osg::Node* node, osg::NodeVisitor* nv) override
-    {
-        PhotonCamera* camera = static_cast<PhotonCamera*>(node);
-        osgUtil::CullVisitor* cv = nv->asCullVisitor();
-        if (!cv || !camera->getSurface()) return;
-        cv->pushStateSet(camera->getWaterState());
-        cv->pushStateSet(camera->getPhotonState());
-        camera->getSurface()->accept(*nv);
-        cv->popStateSet();
-        cv->popStateSet();
-    }
-};
-
-}
 
 PhotonCamera::PhotonCamera(osg::StateSet* waterState, int gridSize, bool floatTarget)
     : _size(gridSize), _waterState(waterState)
 {
     setName("osgWater.PhotonCamera");
-    setUpPassTarget(this, gridSize, -2); // after the sun depth map, before the gather
+    setUpPassTarget(this, gridSize, gridSize, PASS_PHOTONS);
     setClearColor(osg::Vec4(0.0f, 0.0f, 0.0f, 0.0f)); // alpha 0: no photon
-    setCullCallback(new PhotonCullCallback);
 
     _photons = makeTargetTexture(gridSize, floatTarget ? GL_RGBA32F_ARB : GL_RGBA16, GL_RGBA,
                                  floatTarget ? GL_FLOAT : GL_UNSIGNED_SHORT, false);
@@ -45,19 +23,25 @@ PhotonCamera::PhotonCamera(osg::StateSet* waterState, int gridSize, bool floatTa
     _photonState->setDataVariance(osg::Object::DYNAMIC);
     _photonState->setAttribute(createProgram("osgWater.photon", "photon.vert", "photon.frag"));
     // the search of optics.glsl reads "the refraction depth": here the sun's depth map
-    _photonState->addUniform(new osg::Uniform("osgWater_RefractionDepth", 3));
+    _photonState->addUniform(new osg::Uniform("osgWater_RefractionDepth", int(UNIT_REFRACTION_DEPTH)));
     _photonState->addUniform(new osg::Uniform("osgWater_RefractionProj", osg::Matrixf()));
     _photonState->addUniform(new osg::Uniform("osgWater_RefractionInvProj", osg::Matrixf()));
     _photonState->setMode(GL_BLEND, osg::StateAttribute::OFF | osg::StateAttribute::OVERRIDE);
+
+    // the water's surface under the water and photon states (the surface is set by setSun())
+    _draw = new DrawNodes;
+    _draw->addNode(nullptr, { waterState, _photonState.get() });
+    setCullCallback(_draw.get());
 }
 
 void PhotonCamera::setSun(osg::Node* surface, const osg::Matrixd& view, const osg::Matrixd& projection,
                           osg::Texture2D* sunDepth)
 {
     _surface = surface;
+    _draw->setNode(0, surface);
     setViewMatrix(view);
     setProjectionMatrix(projection);
     _photonState->getUniform("osgWater_RefractionProj")->set(osg::Matrixf(projection));
     _photonState->getUniform("osgWater_RefractionInvProj")->set(osg::Matrixf(osg::Matrixd::inverse(projection)));
-    _photonState->setTextureAttribute(3, sunDepth);
+    _photonState->setTextureAttribute(UNIT_REFRACTION_DEPTH, sunDepth);
 }

@@ -47,8 +47,8 @@ public:
         if (glbo && ext) {
             if (glbo->isDirty()) glbo->compileBuffer(); // allocates it once
             state.unbindPixelBufferObject();
-            state.setActiveTextureUnit(0);
-            state.applyTextureAttribute(0, _photons.get());
+            state.setActiveTextureUnit(UNIT_PASS_INPUT);
+            state.applyTextureAttribute(UNIT_PASS_INPUT, _photons.get());
             ext->glBindBuffer(GL_PIXEL_PACK_BUFFER_ARB, glbo->getGLObjectID());
             glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_FLOAT,
                           reinterpret_cast<void*>(glbo->getOffset(a->getBufferIndex())));
@@ -84,13 +84,13 @@ public:
         _in.resize(std::size_t(_grid) * _grid * 4);
         _out.assign(std::size_t(_res) * _res, 0.0f);
         state.unbindPixelBufferObject();
-        state.setActiveTextureUnit(0);
-        state.applyTextureAttribute(0, _photons.get());
+        state.setActiveTextureUnit(UNIT_PASS_INPUT);
+        state.applyTextureAttribute(UNIT_PASS_INPUT, _photons.get());
         glPixelStorei(GL_PACK_ALIGNMENT, 4);
         glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_FLOAT, _in.data());
         const float weight = float(_res) * _res / (float(_grid) * _grid) / _scale;
         splatPhotons(_in.data(), std::size_t(_grid) * _grid, weight, _out.data(), _res);
-        state.applyTextureAttribute(0, _caustics.get());
+        state.applyTextureAttribute(UNIT_PASS_INPUT, _caustics.get());
         glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
         glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, _res, _res, GL_RED, GL_FLOAT, _out.data());
     }
@@ -113,11 +113,11 @@ osg::Geode* geodeOf(osg::Drawable* d)
 }
 
 PhotonGather::PhotonGather(osg::Texture2D* photons, int gridSize, int resolution, bool floatTarget)
-    : _method(WaterSettings::GATHER_POINTS_TEXTURE), _resolution(resolution),
+    : _method(WaterSettings::GATHER_AUTO), _resolution(resolution),
       _valueScale(floatTarget ? 1.0f : 16.0f)
 {
     setName("osgWater.PhotonGather");
-    setUpPassTarget(this, resolution, -1); // after the photons, before the views' passes
+    setUpPassTarget(this, resolution, resolution, PASS_GATHER);
     setClearMask(GL_COLOR_BUFFER_BIT);
     setClearColor(osg::Vec4(0.0f, 0.0f, 0.0f, 0.0f));
     setProjectionMatrix(osg::Matrixd::identity()); // the splat shader writes clip space itself
@@ -129,6 +129,7 @@ PhotonGather::PhotonGather(osg::Texture2D* photons, int gridSize, int resolution
     attach(osg::Camera::COLOR_BUFFER, _caustics.get());
 
     osg::StateSet* ss = getOrCreateStateSet();
+    ss->setDataVariance(osg::Object::DYNAMIC); // the paths switch between frames
     ss->setAttribute(createProgram("osgWater.splat", "splat.vert", "splat.frag"));
     ss->setAttributeAndModes(new osg::BlendFunc(GL_ONE, GL_ONE), osg::StateAttribute::ON);
     ss->setAttribute(new osg::Point(2.0f)); // 2x2 pixels: the tent's support
@@ -137,7 +138,7 @@ PhotonGather::PhotonGather(osg::Texture2D* photons, int gridSize, int resolution
     ss->addUniform(new osg::Uniform("osgWater_PhotonWeight",
                                     float(resolution) * resolution / (float(gridSize) * gridSize) / _valueScale));
     ss->addUniform(new osg::Uniform("osgWater_CausticsSize", float(resolution)));
-    ss->addUniform(new osg::Uniform("osgWater_Photons", 0));
+    ss->addUniform(new osg::Uniform("osgWater_Photons", int(UNIT_PASS_INPUT)));
 
     const unsigned int n = unsigned(gridSize) * unsigned(gridSize);
     osg::ref_ptr<osg::Vec4Array> copyTarget = new osg::Vec4Array(n);
@@ -149,7 +150,7 @@ PhotonGather::PhotonGather(osg::Texture2D* photons, int gridSize, int resolution
     osg::ref_ptr<osg::Vec2Array> texels = new osg::Vec2Array(n);
     for (unsigned int i = 0; i < n; ++i) (*texels)[i].set(float(i % gridSize), float(i / gridSize));
     _textureSplat = geodeOf(photonPoints(texels.get(), n));
-    _textureSplat->getOrCreateStateSet()->setTextureAttribute(0, photons);
+    _textureSplat->getOrCreateStateSet()->setTextureAttribute(UNIT_PASS_INPUT, photons);
     _textureSplat->getOrCreateStateSet()->setDefine("OSGWATER_SPLAT_TEXTURE");
 
     _cpuGather = geodeOf(new CpuGather(photons, gridSize, _caustics.get(), resolution, _valueScale));
@@ -157,14 +158,26 @@ PhotonGather::PhotonGather(osg::Texture2D* photons, int gridSize, int resolution
     addChild(_copySplat.get());
     addChild(_textureSplat.get());
     addChild(_cpuGather.get());
-    setMethod(floatTarget ? WaterSettings::GATHER_POINTS_TEXTURE : WaterSettings::GATHER_CPU);
+    // nothing drawn until CausticsCamera::resolveGather() chose
+    _copySplat->setNodeMask(0u);
+    _textureSplat->setNodeMask(0u);
+    _cpuGather->setNodeMask(0u);
 }
 
 void PhotonGather::setMethod(WaterSettings::CausticsGather m)
 {
-    if (m == WaterSettings::GATHER_AUTO) m = WaterSettings::GATHER_POINTS_TEXTURE;
+    if (m == _method) return;
     _method = m;
-    _copySplat->setNodeMask(m == WaterSettings::GATHER_POINTS_COPY ? ~0u : 0u);
-    _textureSplat->setNodeMask(m == WaterSettings::GATHER_POINTS_TEXTURE ? ~0u : 0u);
-    _cpuGather->setNodeMask(m == WaterSettings::GATHER_CPU ? ~0u : 0u);
+    const std::pair<osg::Geode*, WaterSettings::CausticsGather> paths[] = {
+        { _copySplat.get(), WaterSettings::GATHER_POINTS_COPY },
+        { _textureSplat.get(), WaterSettings::GATHER_POINTS_TEXTURE },
+        { _cpuGather.get(), WaterSettings::GATHER_CPU } };
+    for (const auto& p : paths) {
+        const bool on = p.second == m;
+        // a path switched off keeps no GL buffers (the automatic choice tries every path once);
+        // its drawables only: the geode's state holds the photon target, which stays
+        if (!on && p.first->getNodeMask() != 0u)
+            for (unsigned int i = 0; i < p.first->getNumDrawables(); ++i) p.first->getDrawable(i)->releaseGLObjects(nullptr);
+        p.first->setNodeMask(on ? ~0u : 0u);
+    }
 }

@@ -6,9 +6,10 @@
 using namespace osgWater;
 
 ReflectionCamera::ReflectionCamera(osg::Group* scene, osg::StateSet* sceneState, int textureSize)
-    : PassCamera(scene, sceneState, textureSize)
+    : PassCamera(scene, { sceneState }, textureSize, textureSize, PASS_REFLECTION)
 {
     setName("osgWater.ReflectionCamera");
+    attachColorTexture();
     attach(osg::Camera::DEPTH_BUFFER, GL_DEPTH_COMPONENT24);
     // the mirror flips winding: keep front faces front
     getOrCreateStateSet()->setAttribute(new osg::FrontFace(osg::FrontFace::CLOCKWISE));
@@ -24,15 +25,8 @@ void ReflectionCamera::update(const PassContext& ctx)
     double zn = 0.1, zf = 1000.0;
     nearFarForBound(view, ctx.scene, zn, zf);
     const osg::Matrixd proj = withNearFar(extendFov(ctx.projection, ctx.fovExtension), zn, zf);
-    osg::Vec3 sun = ctx.settings ? ctx.settings->getSunDirection() : osg::Vec3(0.0f, 0.0f, 1.0f);
-    setMatrices(view, proj, sun);
-    // under water the mirror shows the underwater scene through water (thesis §7.5: eq. 10 with
-    // d = |A2 - C2| in this pass), and a ray that meets nothing ends in water
-    if (ctx.eyeBelow && ctx.settings) {
-        setUnderwaterFog(getOrCreateStateSet(), ctx.settings->getWaterColor(), ctx.settings->getAttenuation());
-        setClearColor(osg::Vec4(ctx.settings->getWaterColor(), 1.0f));
-    } else {
-        setUnderwaterFog(getOrCreateStateSet(), osg::Vec3(), 0.0f);
-        setClearColor(ctx.clearColor);
-    }
+    setViewMatrix(view);
+    setProjectionMatrix(proj);
+    // under water a ray that meets nothing ends in water (the fog of eq. 10 comes with the lighting)
+    setClearColor(ctx.eyeBelow && ctx.settings ? osg::Vec4(ctx.settings->getWaterColor(), 1.0f) : ctx.clearColor);
 }

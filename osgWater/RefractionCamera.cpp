@@ -6,10 +6,11 @@
 using namespace osgWater;
 
 RefractionCamera::RefractionCamera(osg::Group* scene, osg::StateSet* sceneState, int textureSize)
-    : PassCamera(scene, sceneState, textureSize)
+    : PassCamera(scene, { sceneState }, textureSize, textureSize, PASS_REFRACTION)
 {
     setName("osgWater.RefractionCamera");
-    _depth = makeTexture(textureSize, GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT, GL_FLOAT, false);
+    attachColorTexture();
+    _depth = makeTargetTexture(textureSize, GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT, GL_FLOAT, false);
     _depth->setName("osgWater.refractionDepth");
     attach(osg::Camera::DEPTH_BUFFER, _depth.get());
     // thesis fig. 3: clipped solids must not show their insides
@@ -30,8 +31,8 @@ void RefractionCamera::update(const PassContext& ctx)
     double zn = 0.1, zf = 1000.0;
     nearFarForBound(view, ctx.scene, zn, zf);
     const osg::Matrixd proj = withNearFar(extendFov(ctx.projection, ctx.fovExtension), zn, zf);
-    osg::Vec3 sun = ctx.settings ? ctx.settings->getSunDirection() : osg::Vec3(0.0f, 0.0f, 1.0f);
-    setMatrices(view, proj, sun);
+    setViewMatrix(view);
+    setProjectionMatrix(proj);
     // from below this pass sees the air side: where it sees nothing, that is the sky
     setClearColor(ctx.eyeBelow ? ctx.clearColor : osg::Vec4(0.0f, 0.0f, 0.0f, 0.0f));
 }

@@ -1,6 +1,7 @@
 #include <osgWater/UnderwaterView>
 #include <osgWater/ScreenTriangle>
 #include <osgWater/Shaders>
+#include <osgWater/PassTable>
 #include <osg/Depth>
 #include <osg/CullFace>
 
@@ -14,7 +15,7 @@ UnderwaterView::UnderwaterView()
     cap->setAttribute(createProgram("osgWater.cap", "screen.vert", "cap.frag"));
     cap->setAttributeAndModes(new osg::Depth(osg::Depth::ALWAYS, 0.0, 1.0, false));
     cap->setMode(GL_CULL_FACE, osg::StateAttribute::OFF);
-    cap->setRenderBinDetails(20, "RenderBin");
+    cap->setRenderBinDetails(renderBin(PASS_CAP), "RenderBin");
 
     // at the far plane, only where nothing was drawn (depth still clear)
     // (just inside the far plane: a fragment exactly on it may be clipped)
@@ -23,11 +24,17 @@ UnderwaterView::UnderwaterView()
     bd->setAttribute(createProgram("osgWater.backdrop", "screen.vert", "backdrop.frag"));
     bd->setAttributeAndModes(new osg::Depth(osg::Depth::LEQUAL, 0.0, 1.0, false));
     bd->setMode(GL_CULL_FACE, osg::StateAttribute::OFF);
-    bd->setRenderBinDetails(19, "RenderBin");
+    bd->setRenderBinDetails(renderBin(PASS_BACKDROP), "RenderBin");
 }
 
-void UnderwaterView::cull(osgUtil::CullVisitor& cv, bool surfaceInView, bool eyeBelow)
+void UnderwaterView::resizeGLObjectBuffers(unsigned int maxSize)
 {
-    if (eyeBelow) _backdrop->accept(cv);
-    if (surfaceInView) _cap->accept(cv);
+    _cap->resizeGLObjectBuffers(maxSize);
+    _backdrop->resizeGLObjectBuffers(maxSize);
+}
+
+void UnderwaterView::releaseGLObjects(osg::State* state) const
+{
+    _cap->releaseGLObjects(state);
+    _backdrop->releaseGLObjects(state);
 }

@@ -5,32 +5,41 @@
 
 using namespace osgWater;
 
-ViewPasses::ViewPasses(osg::Group* scene, osg::StateSet* sceneState, int reflectionSize, int refractionSize)
+namespace {
+
+void setDefine(osg::StateSet* ss, const char* name, bool on)
+{
+    if (on) ss->setDefine(name);
+    else ss->removeDefine(name);
+}
+
+}
+
+ViewPasses::ViewPasses(osg::Group* scene, osg::StateSet* sceneState, osg::StateSet* waterState, osg::StateSet* lighting,
+                       int reflectionSize, int refractionSize)
+    : _scene(scene), _sceneState(sceneState), _waterState(waterState), _lighting(lighting)
 {
     _reflection = new ReflectionCamera(scene, sceneState, reflectionSize);
     _refraction = new RefractionCamera(scene, sceneState, refractionSize);
     _reflectionTimer = new GpuTimer;
     _refractionTimer = new GpuTimer;
-    _stateSet = new osg::StateSet;
-    _stateSet->setDataVariance(osg::Object::DYNAMIC);
-    _stateSet->setTextureAttribute(1, _reflection->getColorTexture());
-    _stateSet->setTextureAttribute(2, _refraction->getColorTexture());
-    _stateSet->setTextureAttribute(3, _refraction->getDepthTexture());
+    // changes every frame: OSG must not draw it while the next frame's cull writes
+    _waterInputs = new osg::StateSet;
+    _waterInputs->setName("osgWater.viewWaterInputs");
+    _waterInputs->setDataVariance(osg::Object::DYNAMIC);
+    _waterInputs->setTextureAttribute(UNIT_REFLECTION, _reflection->getColorTexture());
+    _waterInputs->setTextureAttribute(UNIT_REFRACTION, _refraction->getColorTexture());
+    _waterInputs->setTextureAttribute(UNIT_REFRACTION_DEPTH, _refraction->getDepthTexture());
     const char* mats[] = { "osgWater_ReflectionMVP", "osgWater_RefractionView", "osgWater_RefractionViewInverse",
                            "osgWater_RefractionProj", "osgWater_RefractionInvProj" };
-    for (const char* m : mats) _stateSet->addUniform(new osg::Uniform(m, osg::Matrixf()));
-    _stateSet->addUniform(new osg::Uniform("osgWater_EyeLocal", osg::Vec3f()));
-    _stateSet->addUniform(new osg::Uniform("osgWater_SunEye", osg::Vec3f(0.0f, 0.0f, 1.0f)));
-    _stateSet->addUniform(new osg::Uniform("osgWater_ClipPlane", osg::Vec4f(0.0f, 0.0f, 0.0f, 1.0f)));
-    addCausticsUniforms(_stateSet.get());
-    setUnderwaterFog(_stateSet.get(), osg::Vec3(), 0.0f);
+    for (const char* m : mats) _waterInputs->addUniform(new osg::Uniform(m, osg::Matrixf()));
+    _waterInputs->addUniform(new osg::Uniform("osgWater_EyeLocal", osg::Vec3f()));
 }
 
-GlowPasses* ViewPasses::getOrCreateGlow(int width, int height, bool floatTargets, osg::Group* scene,
-                                        osg::StateSet* sceneState, osg::StateSet* waterState)
+GlowPasses* ViewPasses::getOrCreateGlow(int width, int height, bool floatTargets)
 {
     if (!_glow.valid() || !_glow->matches(width, height, floatTargets))
-        _glow = new GlowPasses(scene, sceneState, waterState, width, height, floatTargets);
+        _glow = new GlowPasses(_scene, _sceneState.get(), _waterState.get(), width, height, floatTargets);
     return _glow.get();
 }
 
@@ -52,14 +61,27 @@ void ViewPasses::setTimingEnabled(bool on)
     }
 }
 
-void ViewPasses::update(const PassContext& ctx, bool reflection, bool refraction)
+void ViewPasses::update(const PassContext& ctx, const PassPlan& plan, const SceneLighting& lighting)
 {
-    if (reflection) _reflection->update(ctx);
-    if (refraction) {
-        _refraction->update(ctx);
-        applyCausticsLighting(_refraction->getOrCreateStateSet(), ctx.caustics, _refraction->getViewMatrix(), ctx.level);
+    _plan = plan;
+    _eyeBelow = ctx.eyeBelow;
+    if (plan.runs(PASS_REFLECTION)) {
+        // under water the mirror shows the underwater scene through water (thesis §7.5: eq. 10
+        // with d = |A2 - C2| in this pass): the view's fog comes along
+        _reflection->update(ctx);
+        _reflection->applyLighting(lighting);
     }
-    osg::StateSet* ss = _stateSet.get();
+    if (plan.runs(PASS_REFRACTION)) {
+        // from above, the water shader attenuates the refracted colour itself; from below, this
+        // pass sees the air: no fog either way
+        _refraction->update(ctx);
+        SceneLighting noFog = lighting;
+        noFog.fogAttenuation = 0.0f;
+        _refraction->applyLighting(noFog);
+    }
+    if (!plan.runs(PASS_SURFACE) && !plan.runs(PASS_CAP)) return; // the water inputs are read by nothing
+
+    osg::StateSet* ss = _waterInputs.get();
     ss->getUniform("osgWater_ReflectionMVP")->set(osg::Matrixf(_reflection->getViewProjection()));
     const osg::Matrixd& rv = _refraction->getViewMatrix();
     const osg::Matrixd& rp = _refraction->getProjectionMatrix();
@@ -68,32 +90,57 @@ void ViewPasses::update(const PassContext& ctx, bool reflection, bool refraction
     ss->getUniform("osgWater_RefractionProj")->set(osg::Matrixf(rp));
     ss->getUniform("osgWater_RefractionInvProj")->set(osg::Matrixf(osg::Matrixd::inverse(rp)));
     ss->getUniform("osgWater_EyeLocal")->set(osg::Vec3f(eyePosition(ctx.view)));
-    _eyeBelow = ctx.eyeBelow;
-    if (ctx.eyeBelow) ss->setDefine("OSGWATER_EYE_BELOW");
-    else ss->removeDefine("OSGWATER_EYE_BELOW");
-    // eq. 10 in the main view: under water, every object is seen through water
-    if (ctx.eyeBelow && ctx.settings) setUnderwaterFog(ss, ctx.settings->getWaterColor(), ctx.settings->getAttenuation());
-    else setUnderwaterFog(ss, osg::Vec3(), 0.0f);
-    applyCausticsLighting(ss, ctx.caustics, ctx.view, ctx.level);
-    if (ctx.settings) {
-        osg::Vec3f sun = osg::Matrixd::transform3x3(ctx.settings->getSunDirection(), ctx.view);
-        sun.normalize();
-        ss->getUniform("osgWater_SunEye")->set(sun);
-    }
+    setDefine(ss, "OSGWATER_EYE_BELOW", ctx.eyeBelow);
+    // the shader reads a pass's texture only when the pass ran this frame
+    setDefine(ss, "OSGWATER_NO_REFLECTION", !plan.runs(PASS_REFLECTION));
+    setDefine(ss, "OSGWATER_NO_REFRACTION", !plan.runs(PASS_REFRACTION));
 }
 
-ViewPasses* ViewPassesMap::get(osg::Camera* camera, osg::Group* scene, osg::StateSet* sceneState,
-                               int reflectionSize, int refractionSize)
+void ViewPasses::resizeGLObjectBuffers(unsigned int maxSize)
 {
-    OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_mutex);
-    // release the passes of views that are gone
+    _reflection->resizeGLObjectBuffers(maxSize);
+    _refraction->resizeGLObjectBuffers(maxSize);
+    _waterInputs->resizeGLObjectBuffers(maxSize);
+    if (_glow.valid()) _glow->resizeGLObjectBuffers(maxSize);
+}
+
+void ViewPasses::releaseGLObjects(osg::State* state) const
+{
+    _reflection->releaseGLObjects(state);
+    _refraction->releaseGLObjects(state);
+    _waterInputs->releaseGLObjects(state);
+    if (_glow.valid()) _glow->releaseGLObjects(state);
+}
+
+ViewPassesMap::Entry& ViewPassesMap::entry(osg::Camera* camera)
+{
+    // release what views that are gone held
     for (auto it = _map.begin(); it != _map.end();)
         it = it->second.camera.valid() ? std::next(it) : _map.erase(it);
     Entry& e = _map[camera];
-    if (!e.passes.valid() || !e.passes->matchesSizes(reflectionSize, refractionSize)) {
+    if (!e.lighting.valid()) {
         e.camera = camera;
-        e.passes = new ViewPasses(scene, sceneState, reflectionSize, refractionSize);
+        // changes every frame: OSG must not draw it while the next frame's cull writes
+        e.lighting = new osg::StateSet;
+        e.lighting->setName("osgWater.viewLighting");
+        e.lighting->setDataVariance(osg::Object::DYNAMIC);
     }
+    return e;
+}
+
+osg::StateSet* ViewPassesMap::getLighting(osg::Camera* camera)
+{
+    OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_mutex);
+    return entry(camera).lighting.get();
+}
+
+ViewPasses* ViewPassesMap::get(osg::Camera* camera, osg::Group* scene, osg::StateSet* sceneState,
+                               osg::StateSet* waterState, int reflectionSize, int refractionSize)
+{
+    OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_mutex);
+    Entry& e = entry(camera);
+    if (!e.passes.valid() || !e.passes->matchesSizes(reflectionSize, refractionSize))
+        e.passes = new ViewPasses(scene, sceneState, waterState, e.lighting.get(), reflectionSize, refractionSize);
     return e.passes.get();
 }
 
@@ -107,11 +154,31 @@ ViewPasses* ViewPassesMap::find(osg::Camera* camera) const
 size_t ViewPassesMap::size() const
 {
     OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_mutex);
-    return _map.size();
+    size_t n = 0;
+    for (const auto& e : _map) n += e.second.passes.valid();
+    return n;
 }
 
 void ViewPassesMap::clear()
 {
     OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_mutex);
     _map.clear();
+}
+
+void ViewPassesMap::resizeGLObjectBuffers(unsigned int maxSize)
+{
+    OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_mutex);
+    for (auto& e : _map) {
+        e.second.lighting->resizeGLObjectBuffers(maxSize);
+        if (e.second.passes.valid()) e.second.passes->resizeGLObjectBuffers(maxSize);
+    }
+}
+
+void ViewPassesMap::releaseGLObjects(osg::State* state) const
+{
+    OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_mutex);
+    for (const auto& e : _map) {
+        e.second.lighting->releaseGLObjects(state);
+        if (e.second.passes.valid()) e.second.passes->releaseGLObjects(state);
+    }
 }

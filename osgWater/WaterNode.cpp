@@ -1,5 +1,6 @@
 #include <osgWater/WaterNode>
 #include <osgWater/PassMath>
+#include <osgWater/DrawNodes>
 #include <osgUtil/CullVisitor>
 #include <osg/ComputeBoundsVisitor>
 #include <OpenThreads/ScopedLock>
@@ -69,15 +70,26 @@ osg::BoundingSphere WaterNode::computeBound() const
     return bs;
 }
 
+void WaterNode::resizeGLObjectBuffers(unsigned int maxSize)
+{
+    osg::Group::resizeGLObjectBuffers(maxSize);
+    _surface->resizeGLObjectBuffers(maxSize);
+    _states.resizeGLObjectBuffers(maxSize);
+    _underwater->resizeGLObjectBuffers(maxSize);
+    _views.resizeGLObjectBuffers(maxSize);
+    OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_causticsMutex);
+    if (_caustics.valid()) _caustics->resizeGLObjectBuffers(maxSize);
+}
+
 void WaterNode::releaseGLObjects(osg::State* state) const
 {
     osg::Group::releaseGLObjects(state);
+    _surface->releaseGLObjects(state);
+    _states.releaseGLObjects(state);
+    _underwater->releaseGLObjects(state);
+    _views.releaseGLObjects(state);
+    OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_causticsMutex);
     if (_caustics.valid()) _caustics->releaseGLObjects(state);
-    _underwater->getCap()->releaseGLObjects(state);
-    _underwater->getBackdrop()->releaseGLObjects(state);
-    if (_surface.valid()) _surface->releaseGLObjects(state);
-    _states.getSceneStateSet()->releaseGLObjects(state);
-    _states.getWaterStateSet()->releaseGLObjects(state);
 }
 
 void WaterNode::traverse(osg::NodeVisitor& nv)
@@ -86,6 +98,9 @@ void WaterNode::traverse(osg::NodeVisitor& nv)
         refreshStates();
         if (nv.getFrameStamp()) _states.applyTime(*_surface, nv.getFrameStamp()->getSimulationTime());
         osg::Group::traverse(nv);
+        // bounds are computed lazily; views may cull in parallel threads: compute them here, once
+        getBound();
+        _surface->getBoundingBox();
         return;
     }
     if (osgUtil::CullVisitor* cv = nv.asCullVisitor()) {
@@ -106,90 +121,161 @@ double WaterNode::eyeHeightAboveSurface(const osg::Vec3d& eye, double t) const
 
 void WaterNode::cull(osgUtil::CullVisitor& cv)
 {
-    osg::StateSet* sceneState = _states.getSceneStateSet();
-    osg::Camera* camera = cv.getCurrentCamera();
-    const WaterSettings& s = *_settings;
-    const double t = cv.getFrameStamp() ? cv.getFrameStamp()->getSimulationTime() : 0.0;
-
-    // 1. where is the eye, and is the water in view? Neither under water nor in view: the passes
-    //    cannot change the image, draw the scene only
-    const osg::Matrixd view = *cv.getModelViewMatrix();
-    const double eyeHeight = eyeHeightAboveSurface(eyePosition(view), t);
-    const bool eyeBelow = eyeHeight < 0.0;
-    // the surface's box, not its sphere: a flat lake's sphere reaches far above and below it
-    const bool waterVisible = camera && !cv.isCulled(_surface->getBoundingBox()) &&
-                              (eyeBelow || _surface->getBoundingBox().contains(eyePosition(view)) ||
-                               boxInsidePlanes(_surface->getBoundingBox(),
-                                                           cv.getCurrentCullingSet().getFrustum().getPlaneList()));
-    if (!camera || (!waterVisible && !eyeBelow)) {
-        cv.pushStateSet(sceneState);
-        cv.pushStateSet(_states.getNoCausticsStateSet());
+    if (!cv.getCurrentCamera()) { // no view to hold passes for: the scene alone
+        ScopedStateSets states(cv, { _states.getSceneStateSet() });
         osg::Group::traverse(cv);
-        cv.popStateSet();
-        cv.popStateSet();
         return;
     }
+    // 1. the frame's facts: where the eye is, whether the water is in view, what the context
+    //    can do, the shared caustics
+    ViewFrame v = gatherFacts(cv);
 
-    // 2. this view's passes
-    const CausticsSupport sup = support(cv.getState() ? cv.getState()->getContextID() : 0u);
-    ViewPasses* passes = _views.get(camera, this, sceneState, fitTexture("reflectionTextureSize", s.getReflectionTextureSize(), sup),
-                                    fitTexture("refractionTextureSize", s.getRefractionTextureSize(), sup));
+    // 2. which passes run: the pass table, planned from the facts (a pass nothing reads does not)
+    PassPlan plan = planPasses(v.facts);
+    if (plan.runs(PASS_PHOTONS) && !claimCaustics(v, plan)) {
+        v.facts.causticsDone = true; // another view on this context rendered them meanwhile
+        plan = planPasses(v.facts);
+    }
 
-    // 3. frame context, in the water's local frame
-    PassContext ctx;
-    ctx.view = view;
+    // 3. aim what runs: one SceneLighting for the view and every pass that draws the scene; the
+    //    water shader's defines follow what runs
+    const SceneLighting lighting = sceneLighting(v, plan);
+    applySceneLighting(v.lighting, lighting, v.ctx.view);
+    if (needsViewPasses(plan)) {
+        v.passes = viewPasses(cv, v);
+        if (plan.runs(PASS_GLOW_HIGHLIGHT)) prepareGlow(cv, v);
+        v.passes->update(v.ctx, plan, lighting);
+    }
+
+    // 4. walk the table: pre-render passes first, then the view's own rows
+    for (int i = 0; i < PASS_COUNT; ++i)
+        if (plan.runs(PassId(i))) cullPass(PassId(i), cv, v);
+}
+
+WaterNode::ViewFrame WaterNode::gatherFacts(osgUtil::CullVisitor& cv)
+{
+    const WaterSettings& s = *_settings;
+    osg::Camera* camera = cv.getCurrentCamera();
+    ViewFrame v;
+    v.contextID = cv.getState() ? cv.getState()->getContextID() : 0u;
+    v.frameNumber = cv.getFrameStamp() ? cv.getFrameStamp()->getFrameNumber() : 0u;
+    v.support = support(v.contextID);
+    const double t = cv.getFrameStamp() ? cv.getFrameStamp()->getSimulationTime() : 0.0;
+
+    // the view, in the water's local frame
+    PassContext& ctx = v.ctx;
+    ctx.view = *cv.getModelViewMatrix();
     ctx.projection = *cv.getProjectionMatrix();
     ctx.scene = osg::Group::computeBound();
     ctx.level = _surface->getLevel();
     ctx.clearance = _surface->getMaxAmplitude() + s.getClipOffset();
-    ctx.eyeBelow = eyeBelow;
-    ctx.fovExtension = s.fovExtensionAt(eyeHeight);
     ctx.clearColor = camera->getClearColor();
     ctx.settings = &s;
-    // 3b. caustics: the sun's passes, once per frame for all views (before this view's passes)
-    ctx.caustics = cullCaustics(cv, ctx.scene);
-    const bool reflection = waterVisible && s.getReflectionEnabled();
-    const bool refraction = waterVisible && s.getRefractionEnabled();
-    passes->setTimingEnabled(_passTiming);
-    passes->update(ctx, reflection, refraction);
+    const osg::Vec3d eye = eyePosition(ctx.view);
+    const double eyeHeight = eyeHeightAboveSurface(eye, t);
+    ctx.eyeBelow = eyeHeight < 0.0;
+    ctx.fovExtension = s.fovExtensionAt(eyeHeight);
 
-    // 4. the passes (pre-render stages of this view)
-    if (reflection) passes->getReflectionCamera()->accept(cv);
-    if (refraction) passes->getRefractionCamera()->accept(cv);
+    // is the water in view? The surface's box, not its sphere: a flat lake's sphere reaches far
+    // above and below it
+    const osg::BoundingBox& water = _surface->getBoundingBox();
+    FrameFacts& f = v.facts;
+    f.eyeBelow = ctx.eyeBelow;
+    f.waterInView = !cv.isCulled(water) && (ctx.eyeBelow || water.contains(eye) ||
+                                            boxInsidePlanes(water, cv.getCurrentCullingSet().getFrustum().getPlaneList()));
+    f.reflectionEnabled = s.getReflectionEnabled();
+    f.refractionEnabled = s.getRefractionEnabled();
+    // never over debug outputs: they are data, and the glow would add light to coordinates
+    f.glowInView = _debug == DEBUG_NONE && cv.getViewport() && GlowPasses::highlightInView(ctx, *_surface);
 
-    // 5. the scene, the water surface, the near-plane cap and the underwater backdrop
-    cv.pushStateSet(sceneState);
-    cv.pushStateSet(passes->getStateSet());
-    osg::Group::traverse(cv);
-    cv.pushStateSet(_states.getWaterStateSet());
-    if (waterVisible) _surface->accept(cv);
-    _underwater->cull(cv, waterVisible, eyeBelow);
-    cv.popStateSet();
-    cv.popStateSet();
-    cv.popStateSet();
-
-    // 6. glow of the sun's highlight, when it can be in view (never over debug outputs: they are
-    //    data, and the glow would add light to coordinates)
-    if (waterVisible && _debug == DEBUG_NONE) cullGlow(cv, passes, ctx, sup);
-    else passes->setGlowDrawn(false);
+    v.lighting = _views.getLighting(camera);
+    prepareCaustics(v);
+    return v;
 }
 
-void WaterNode::cullGlow(osgUtil::CullVisitor& cv, ViewPasses* passes, const PassContext& ctx,
-                         const CausticsSupport& sup)
+bool WaterNode::needsViewPasses(const PassPlan& plan)
+{
+    // the shared caustics and the view's own scene need no per-view passes
+    const unsigned shared = (1u << PASS_SUN_DEPTH) | (1u << PASS_PHOTONS) | (1u << PASS_GATHER) | (1u << PASS_SCENE);
+    return (plan.bits() & ~shared) != 0;
+}
+
+ViewPasses* WaterNode::viewPasses(osgUtil::CullVisitor& cv, const ViewFrame& v)
+{
+    const WaterSettings& s = *_settings;
+    ViewPasses* passes = _views.get(cv.getCurrentCamera(), this, _states.getSceneStateSet(), _states.getWaterStateSet(),
+                                    fitTexture("reflectionTextureSize", s.getReflectionTextureSize(), v.support),
+                                    fitTexture("refractionTextureSize", s.getRefractionTextureSize(), v.support));
+    passes->setTimingEnabled(_passTiming);
+    return passes;
+}
+
+SceneLighting WaterNode::sceneLighting(const ViewFrame& v, const PassPlan& plan) const
+{
+    const WaterSettings& s = *_settings;
+    SceneLighting l;
+    l.towardsSun = s.getSunDirection();
+    l.level = v.ctx.level;
+    // eq. 10: with the eye under water every object is seen through water
+    if (v.ctx.eyeBelow) {
+        l.fogColor = s.getWaterColor();
+        l.fogAttenuation = s.getAttenuation();
+    }
+    // the caustics, when this frame has them on this context (rendered now or by another view)
+    if (v.facts.caustics && (plan.runs(PASS_GATHER) || v.facts.causticsDone)) l.caustics = &_caustics->getLighting();
+    return l;
+}
+
+void WaterNode::cullPass(PassId pass, osgUtil::CullVisitor& cv, const ViewFrame& v)
+{
+    osg::StateSet* scene = _states.getSceneStateSet();
+    osg::StateSet* water = _states.getWaterStateSet();
+    ViewPasses* p = v.passes; // null only when the plan runs nothing but the shared rows and the scene
+    switch (pass) {
+    case PASS_SUN_DEPTH:
+    case PASS_PHOTONS:
+    case PASS_GATHER:
+        _caustics->getPassCamera(pass)->accept(cv);
+        break;
+    case PASS_REFLECTION: p->getReflectionCamera()->accept(cv); break;
+    case PASS_REFRACTION: p->getRefractionCamera()->accept(cv); break;
+    case PASS_GLOW_HIGHLIGHT:
+    case PASS_GLOW_BLUR_H:
+    case PASS_GLOW_BLUR_V:
+        p->getGlow()->getPassCamera(pass)->accept(cv);
+        break;
+    case PASS_SCENE: {
+        ScopedStateSets states(cv, { scene, v.lighting });
+        osg::Group::traverse(cv);
+        break;
+    }
+    case PASS_SURFACE: {
+        ScopedStateSets states(cv, { scene, v.lighting, p->getWaterInputs(), water });
+        _surface->accept(cv);
+        break;
+    }
+    case PASS_BACKDROP: {
+        ScopedStateSets states(cv, { scene, v.lighting, p->getWaterInputs(), water });
+        _underwater->getBackdrop()->accept(cv);
+        break;
+    }
+    case PASS_CAP: {
+        ScopedStateSets states(cv, { scene, v.lighting, p->getWaterInputs(), water });
+        _underwater->getCap()->accept(cv);
+        break;
+    }
+    case PASS_GLOW_COMPOSITE: p->getGlow()->getComposite()->accept(cv); break;
+    case PASS_COUNT: break;
+    }
+}
+
+void WaterNode::prepareGlow(osgUtil::CullVisitor& cv, const ViewFrame& v)
 {
     const osg::Viewport* vp = cv.getViewport();
-    if (!vp || !GlowPasses::highlightInView(ctx, *_surface)) {
-        passes->setGlowDrawn(false);
-        return;
-    }
     const double f = _settings->getGlowResolution();
-    const int w = fitTexture("glow target width", std::max(1, int(std::lround(vp->width() * f))), sup);
-    const int h = fitTexture("glow target height", std::max(1, int(std::lround(vp->height() * f))), sup);
-    GlowPasses* glow = passes->getOrCreateGlow(w, h, sup.floatTargets, this, _states.getSceneStateSet(),
-                                               _states.getWaterStateSet());
-    glow->update(ctx, _surface.get());
-    glow->cull(cv);
-    passes->setGlowDrawn(true);
+    const int w = fitTexture("glow target width", std::max(1, int(std::lround(vp->width() * f))), v.support);
+    const int h = fitTexture("glow target height", std::max(1, int(std::lround(vp->height() * f))), v.support);
+    v.passes->getOrCreateGlow(w, h, v.support.floatTargets)->update(v.ctx, _surface.get());
 }
 
 CausticsSupport WaterNode::support(unsigned int context)
@@ -222,46 +308,48 @@ const osg::BoundingBox& WaterNode::sceneBox(const osg::BoundingSphere& bs)
     return _sceneBox;
 }
 
-const CausticsLighting* WaterNode::cullCaustics(osgUtil::CullVisitor& cv, const osg::BoundingSphere& sceneBound)
+void WaterNode::prepareCaustics(ViewFrame& v)
 {
     const WaterSettings& s = *_settings;
-    if (!s.getCausticsEnabled()) return nullptr;
+    if (!s.getCausticsEnabled()) return;
     OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_causticsMutex);
-    CausticsCamera::Frame f;
-    f.towardsSun = s.getSunDirection();
-    f.water = _surface->getBoundingBox();
-    f.scene = sceneBox(sceneBound);
-    f.level = _surface->getLevel();
-    f.clearance = _surface->getMaxAmplitude() + s.getClipOffset();
-    f.surface = _surface.get();
-    f.settings = &s;
-    if (!CausticsCamera::needed(f)) return nullptr;
-
-    const unsigned int context = cv.getState() ? cv.getState()->getContextID() : 0u;
-    const unsigned int frame = cv.getFrameStamp() ? cv.getFrameStamp()->getFrameNumber() : 0u;
-    auto done = _causticsFrame.find(context);
-    if (_caustics.valid() && done != _causticsFrame.end() && done->second == frame)
-        return &_caustics->getLighting(); // another view already rendered them this frame
-
-    const CausticsSupport support = this->support(context);
-    const int resolution = fitTexture("causticsResolution", s.getCausticsResolution(), support);
-    const int grid = fitTexture("photonGridSize", s.getPhotonGridSize(), support);
-    if (!_caustics.valid() || !_caustics->matches(resolution, grid, support.floatTargets))
-        _caustics = new CausticsCamera(this, _states.getSceneStateSet(), _states.getWaterStateSet(),
-                                       resolution, grid, support.floatTargets);
-    f.gather = s.getCausticsGather() == WaterSettings::GATHER_AUTO ? _caustics->autoGather(support)
-                                                                  : support.resolve(s.getCausticsGather());
-    if (f.gather != _activeGather) {
-        if (s.getCausticsGather() != WaterSettings::GATHER_AUTO && f.gather != s.getCausticsGather())
-            OSG_WARN << "osgWater: caustics gather " << CausticsCamera::gatherName(s.getCausticsGather())
-                     << " is not supported by this context, using " << CausticsCamera::gatherName(f.gather) << std::endl;
-        if (!support.floatTargets)
-            OSG_WARN << "osgWater: no float render targets, caustics fall back to the CPU gather" << std::endl;
-        OSG_DEBUG << "osgWater: caustics gather: " << CausticsCamera::gatherName(f.gather) << std::endl;
-        _activeGather = f.gather;
+    if (_causticsAimed != v.frameNumber) { // once per frame: every view and context shares them
+        _causticsAimed = v.frameNumber;
+        CausticsCamera::Frame f;
+        f.towardsSun = s.getSunDirection();
+        f.water = _surface->getBoundingBox();
+        f.scene = sceneBox(osg::Group::computeBound());
+        f.level = _surface->getLevel();
+        f.clearance = _surface->getMaxAmplitude() + s.getClipOffset();
+        f.surface = _surface.get();
+        f.settings = &s;
+        _causticsNeeded = CausticsCamera::needed(f);
+        if (_causticsNeeded) {
+            const int resolution = fitTexture("causticsResolution", s.getCausticsResolution(), v.support);
+            const int grid = fitTexture("photonGridSize", s.getPhotonGridSize(), v.support);
+            if (!_caustics.valid() || !_caustics->matches(resolution, grid, v.support.floatTargets))
+                _caustics = new CausticsCamera(this, _states.getSceneStateSet(), _states.getWaterStateSet(),
+                                               resolution, grid, v.support.floatTargets);
+            _caustics->update(f);
+        }
     }
-    _caustics->update(f);
-    _caustics->cullPasses(cv);
-    _causticsFrame[context] = frame;
-    return &_caustics->getLighting();
+    if (!_causticsNeeded || !_caustics.valid()) return;
+    v.facts.caustics = true;
+    auto done = _causticsFrame.find(v.contextID);
+    v.facts.causticsDone = done != _causticsFrame.end() && done->second == v.frameNumber;
+    v.facts.sunDepthStale = _caustics->depthStale(v.contextID);
+}
+
+bool WaterNode::claimCaustics(const ViewFrame& v, const PassPlan& plan)
+{
+    OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_causticsMutex);
+    auto done = _causticsFrame.find(v.contextID);
+    if (done != _causticsFrame.end() && done->second == v.frameNumber) return false;
+    _causticsFrame[v.contextID] = v.frameNumber;
+    if (plan.runs(PASS_SUN_DEPTH)) _caustics->markDepthDrawn(v.contextID);
+    if (_gatherResolved != v.frameNumber) { // the gather follows frames that render caustics
+        _gatherResolved = v.frameNumber;
+        _caustics->resolveGather(_settings->getCausticsGather(), v.support);
+    }
+    return true;
 }

@@ -2,7 +2,7 @@
 #include <osgWater/WaterSettings>
 #include <osgWater/WaterSurface>
 #include <osgWater/Shaders>
-#include <osgWater/PassCamera>
+#include <osgWater/PassTable>
 #include <osg/Material>
 #include <osg/Texture2D>
 #include <osg/Image>
@@ -42,25 +42,24 @@ WaterStateSets::WaterStateSets()
     _scene->setName("osgWater.scene");
     _scene->setAttribute(createProgram("osgWater.scene", "scene.vert", "scene.frag"));
     // geometry without a texture samples this white texel; children's own textures override it
-    _scene->setTextureAttribute(0, whiteTexture());
-    _scene->addUniform(new osg::Uniform("osgWater_BaseTexture", 0));
+    _scene->setTextureAttribute(UNIT_BASE, whiteTexture());
+    _scene->addUniform(new osg::Uniform("osgWater_BaseTexture", int(UNIT_BASE)));
     osg::ref_ptr<osg::Material> m = new osg::Material; // GL's default material, made explicit
     _scene->setAttribute(m.get());
     _scene->addUniform(new osg::Uniform("osgWater_SunColor", osg::Vec3f(1.0f, 1.0f, 1.0f)));
     _scene->addUniform(new osg::Uniform("osgWater_Ambient", osg::Vec3f(0.3f, 0.3f, 0.3f)));
-    // caustics (units 4, 5): the switch and matrices come from each pass's own StateSet
-    _scene->addUniform(new osg::Uniform("osgWater_CausticsTex", 4));
-    _scene->addUniform(new osg::Uniform("osgWater_SunDepth", 5));
-    _noCaustics = new osg::StateSet;
-    addCausticsUniforms(_noCaustics.get());
-    setUnderwaterFog(_noCaustics.get(), osg::Vec3(), 0.0f);
+    // the sun, fog, caustics and clip plane come from each pass's SceneLighting
+    _scene->addUniform(new osg::Uniform("osgWater_CausticsTex", int(UNIT_CAUSTICS)));
+    _scene->addUniform(new osg::Uniform("osgWater_SunDepth", int(UNIT_SUN_DEPTH)));
+    // the sun's colour and the ambient follow the settings, changed in the update traversal
+    _scene->setDataVariance(osg::Object::DYNAMIC);
 
     _water = new osg::StateSet;
     _water->setName("osgWater.water");
     _water->setAttribute(createProgram("osgWater.water", "water.vert", "water.frag"));
-    _water->addUniform(new osg::Uniform("osgWater_ReflectionTex", 1));
-    _water->addUniform(new osg::Uniform("osgWater_RefractionTex", 2));
-    _water->addUniform(new osg::Uniform("osgWater_RefractionDepth", 3));
+    _water->addUniform(new osg::Uniform("osgWater_ReflectionTex", int(UNIT_REFLECTION)));
+    _water->addUniform(new osg::Uniform("osgWater_RefractionTex", int(UNIT_REFRACTION)));
+    _water->addUniform(new osg::Uniform("osgWater_RefractionDepth", int(UNIT_REFRACTION_DEPTH)));
     _water->setDataVariance(osg::Object::DYNAMIC);
     osg::ref_ptr<osg::Uniform> waves = new osg::Uniform(osg::Uniform::FLOAT_VEC4, "osgWater_Waves", WaterSurface::MAX_WAVES);
     osg::ref_ptr<osg::Uniform> phases = new osg::Uniform(osg::Uniform::FLOAT, "osgWater_WavePhases", WaterSurface::MAX_WAVES);
@@ -111,8 +110,7 @@ void WaterStateSets::applySettings(const WaterSettings& s, const WaterSurface& s
     w->setDefine("OSGWATER_FRESNEL", s.getFresnelModel() == WaterSettings::FRESNEL_EXACT ? "2"
                                      : s.getFresnelModel() == WaterSettings::FRESNEL_POWER ? "1" : "0");
     w->setDefine("OSGWATER_UNDERWATER", s.getUnderwaterModel() == WaterSettings::UNDERWATER_THESIS ? "1" : "0");
-    setDefine(w, "OSGWATER_NO_REFLECTION", !s.getReflectionEnabled());
-    setDefine(w, "OSGWATER_NO_REFRACTION", !s.getRefractionEnabled());
+    // OSGWATER_NO_REFLECTION / OSGWATER_NO_REFRACTION follow what ran (ViewPasses), not the settings
     if (debug == DEBUG_NONE) w->removeDefine("OSGWATER_DEBUG");
     else w->setDefine("OSGWATER_DEBUG", debug == DEBUG_BOTTOM_HIT ? "1" : debug == DEBUG_REFLECTION_LOOKUP ? "2"
                                         : debug == DEBUG_FRESNEL ? "3" : "4");
@@ -123,4 +121,16 @@ void WaterStateSets::applyTime(const WaterSurface& surface, double t)
     osg::Uniform* pu = _water->getUniform("osgWater_WavePhases");
     for (unsigned int i = 0; i < WaterSurface::MAX_WAVES; ++i)
         pu->setElement(i, surface.wrappedPhase(i, t));
+}
+
+void WaterStateSets::resizeGLObjectBuffers(unsigned int maxSize)
+{
+    _scene->resizeGLObjectBuffers(maxSize);
+    _water->resizeGLObjectBuffers(maxSize);
+}
+
+void WaterStateSets::releaseGLObjects(osg::State* state) const
+{
+    _scene->releaseGLObjects(state);
+    _water->releaseGLObjects(state);
 }

@@ -1,0 +1,44 @@
+#include <osgWater/SceneLighting>
+#include <osgWater/PassMath>
+#include <osgWater/PassTable>
+
+using namespace osgWater;
+
+namespace {
+
+template<class T> void setUniform(osg::StateSet* ss, const char* name, const T& value)
+{
+    if (osg::Uniform* u = ss->getUniform(name)) u->set(value);
+    else ss->addUniform(new osg::Uniform(name, value));
+}
+
+}
+
+void osgWater::applySceneLighting(osg::StateSet* ss, const SceneLighting& l, const osg::Matrixd& view)
+{
+    osg::Vec3f sun = osg::Matrixd::transform3x3(l.towardsSun, view);
+    sun.normalize();
+    setUniform(ss, "osgWater_SunEye", sun);
+    setUniform(ss, "osgWater_Fog", osg::Vec4f(l.fogColor, l.fogAttenuation));
+    setUniform(ss, "osgWater_WaterPlane", osg::Vec4f(planeToEye(osg::Vec4d(0.0, 0.0, 1.0, -l.level), view)));
+
+    if (l.clip) {
+        setUniform(ss, "osgWater_ClipPlane", osg::Vec4f(planeToEye(l.keepPlane.asVec4(), view)));
+        ss->setMode(GL_CLIP_PLANE0, osg::StateAttribute::ON); // == GL_CLIP_DISTANCE0
+    } else {
+        setUniform(ss, "osgWater_ClipPlane", osg::Vec4f(0.0f, 0.0f, 0.0f, 1.0f));
+        ss->removeMode(GL_CLIP_PLANE0);
+    }
+
+    const CausticsLighting* c = l.caustics;
+    setUniform(ss, "osgWater_Caustics", c ? osg::Vec2f(1.0f, c->intensity) : osg::Vec2f(0.0f, 0.0f));
+    setUniform(ss, "osgWater_EyeToSun", c ? osg::Matrixf(osg::Matrixd::inverse(view) * c->localToSun) : osg::Matrixf());
+    setUniform(ss, "osgWater_SunDepthBias", c ? c->depthBias : osg::Vec2f(0.0f, 0.0f));
+    if (c) {
+        ss->setTextureAttribute(UNIT_CAUSTICS, c->caustics.get());
+        ss->setTextureAttribute(UNIT_SUN_DEPTH, c->depth.get());
+    } else {
+        ss->removeTextureAttribute(UNIT_CAUSTICS, osg::StateAttribute::TEXTURE);
+        ss->removeTextureAttribute(UNIT_SUN_DEPTH, osg::StateAttribute::TEXTURE);
+    }
+}
