@@ -168,6 +168,8 @@ void PhotonGather::setMethod(WaterSettings::CausticsGather m)
 {
     if (m == _method) return;
     _method = m;
+    // the splat program's variants of the paths tried before are not needed any more
+    getStateSet()->getAttribute(osg::StateAttribute::PROGRAM)->releaseGLObjects(nullptr);
     const std::pair<osg::Geode*, WaterSettings::CausticsGather> paths[] = {
         { _copySplat.get(), WaterSettings::GATHER_POINTS_COPY },
         { _textureSplat.get(), WaterSettings::GATHER_POINTS_TEXTURE },
