@@ -239,7 +239,7 @@ TEST(Optics, ToleranceStopsTheSearchEarlyWithoutLosingAccuracy)
     EXPECT_NEAR(glm::length(early.W - all.W), 0.0f, 0.01f);
 }
 
-// Thesis §7.5 and issue 5: the two models of the surface seen from below (eye in water).
+// Thesis §7.5: the two models of the surface seen from below (eye in water).
 TEST(Optics, FromBelowPhysicalModelObeysSnellWithTotalInternalReflection)
 {
     const glm::vec3 N(0.0f, 0.0f, -1.0f); // faces the underwater eye
@@ -277,7 +277,7 @@ TEST(Optics, FromBelowSchlickNeedsTheTransmittedAngle)
         worstTransmitted = std::max(worstTransmitted, std::fabs(b.F - exact));
         worstIncident = std::max(worstIncident, std::fabs(fresnelSchlick(std::cos(ti), normalReflectance(kWater, kAir), 5.0f) - exact));
     }
-    EXPECT_GT(worstIncident, 0.9f);     // issue 5: "wrong by up to 0.97"
+    EXPECT_GT(worstIncident, 0.9f);     // "wrong by up to 0.97"
     EXPECT_LT(worstTransmitted, 0.06f); // Schlick's usual error
 }
 

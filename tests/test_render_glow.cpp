@@ -1,4 +1,4 @@
-// Glow of the sun's highlight (thesis §9.3, issue 5): only pixels near the highlight change, nothing
+// Glow of the sun's highlight (thesis §9.3): only pixels near the highlight change, nothing
 // changes with the sun behind the viewer, and the glow target follows the view's size.
 #include "GLHarness.h"
 #include <osgWater/WaterNode>

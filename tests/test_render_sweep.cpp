@@ -1,4 +1,4 @@
-// Stability sweep (issue 7): at least 10,000 configurations rendered at 64 x 64, every output read
+// Stability sweep: at least 10,000 configurations rendered at 64 x 64, every output read
 // back (final image and every target of every pass) and checked for NaN/Inf and GL errors. Each
 // axis's edge values are listed explicitly and cycled with coprime strides, so every edge value
 // meets many values of every other axis; the rest are drawn from a fixed-seed generator.

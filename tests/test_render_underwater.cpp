@@ -1,4 +1,4 @@
-// The eye under water (thesis §7.5, issue 5): eq. 10 fog, the surface seen from below with total
+// The eye under water (thesis §7.5): eq. 10 fog, the surface seen from below with total
 // internal reflection, the eye's side decided by the wave at the eye, and a camera crossing the
 // surface with a near plane that cuts it.
 #include "GLHarness.h"

@@ -26,7 +26,7 @@ TEST(Settings, DefaultsAreThesisTable1)
     EXPECT_TRUE(s->getCausticsFiltering());                         // "with enabled filtering"
     EXPECT_FLOAT_EQ(s->getGlowExponent(), 200.0f);                  // thesis §9.3 pow(R.E, 200)
     EXPECT_FLOAT_EQ(s->getGlowRadius(), 3.0f);                      // thesis's 7x7 filter
-    EXPECT_FLOAT_EQ(s->getGlowResolution(), 0.25f);                 // issue 5: 1/4 per axis
+    EXPECT_FLOAT_EQ(s->getGlowResolution(), 0.25f);                 // 1/4 per axis
     EXPECT_FLOAT_EQ(s->getUnderwaterLookupScale(), 1.5f);           // m of eq. 13
     EXPECT_EQ(s->getUnderwaterModel(), WaterSettings::UNDERWATER_PHYSICAL);
 }
