@@ -4,6 +4,8 @@
 #include <osg/Texture2D>
 #include <osg/GL>
 #include <osg/Notify>
+#include <osg/GLExtensions>
+#include <osg/GLObjects>
 #include <cstdio>
 #include <osgDB/WriteFile>
 #include <algorithm>
@@ -112,6 +114,39 @@ void dumpImage(const osg::Image* img, const std::string& name)
 
 osg::ref_ptr<osg::Image> Harness::readTexture(osg::Texture2D* texture) { return testing_gl::readTexture(_gc.get(), texture); }
 
+std::ostream& operator<<(std::ostream& os, const GLCounts& c)
+{
+    return os << c.textures << " textures, " << c.framebuffers << " framebuffers, " << c.renderbuffers
+              << " renderbuffers, " << c.buffers << " buffers, " << c.programs << " programs";
+}
+
+GLCounts countGLObjects(osg::GraphicsContext* gc, GLuint& highest)
+{
+    gc->makeCurrent();
+    osg::flushAllDeletedGLObjects(gc->getState()->getContextID());
+    // GL 2/3 entry points OSG does not wrap, loaded through OSG's own loader
+    typedef GLboolean(GL_APIENTRY * IsObject)(GLuint);
+    static IsObject isFramebuffer = nullptr, isRenderbuffer = nullptr, isBuffer = nullptr, isProgram = nullptr;
+    if (!isFramebuffer) {
+        osg::setGLExtensionFuncPtr(isFramebuffer, "glIsFramebuffer", "glIsFramebufferEXT");
+        osg::setGLExtensionFuncPtr(isRenderbuffer, "glIsRenderbuffer", "glIsRenderbufferEXT");
+        osg::setGLExtensionFuncPtr(isBuffer, "glIsBuffer", "glIsBufferARB");
+        osg::setGLExtensionFuncPtr(isProgram, "glIsProgram", "glIsProgramObjectARB");
+    }
+    GLCounts c;
+    for (GLuint i = 1; i < kNames; ++i) {
+        const bool t = glIsTexture(i), f = isFramebuffer && isFramebuffer(i), r = isRenderbuffer && isRenderbuffer(i),
+                   b = isBuffer && isBuffer(i), p = isProgram && isProgram(i);
+        c.textures += t;
+        c.framebuffers += f;
+        c.renderbuffers += r;
+        c.buffers += b;
+        c.programs += p;
+        if (t || f || r || b || p) highest = std::max(highest, i);
+    }
+    return c;
+}
+
 namespace {
 osg::Material* unlit(const osg::Vec4& color)
 {
@@ -123,8 +158,7 @@ osg::Material* unlit(const osg::Vec4& color)
 }
 }
 
-osg::Geode* emissiveQuad(const osg::Vec3& a, const osg::Vec3& b, const osg::Vec3& c, const osg::Vec3& d,
-                         const osg::Vec4& color)
+osg::Geode* litQuad(const osg::Vec3& a, const osg::Vec3& b, const osg::Vec3& c, const osg::Vec3& d)
 {
     osg::Geometry* g = new osg::Geometry;
     osg::Vec3Array* v = new osg::Vec3Array;
@@ -137,6 +171,13 @@ osg::Geode* emissiveQuad(const osg::Vec3& a, const osg::Vec3& b, const osg::Vec3
     g->addPrimitiveSet(new osg::DrawArrays(GL_QUADS, 0, 4));
     osg::Geode* geode = new osg::Geode;
     geode->addDrawable(g);
+    return geode;
+}
+
+osg::Geode* emissiveQuad(const osg::Vec3& a, const osg::Vec3& b, const osg::Vec3& c, const osg::Vec3& d,
+                         const osg::Vec4& color)
+{
+    osg::Geode* geode = litQuad(a, b, c, d);
     geode->getOrCreateStateSet()->setAttribute(unlit(color));
     return geode;
 }

@@ -7,6 +7,7 @@
 #include <osg/Image>
 #include <gtest/gtest.h>
 #include <cstdlib>
+#include <ostream>
 #include <string>
 
 namespace testing_gl {
@@ -55,7 +56,28 @@ private:
 osg::Texture2D* attachFloatTarget(osg::Camera* camera, osg::GraphicsContext* gc, int w, int h);
 osg::ref_ptr<osg::Image> readTexture(osg::GraphicsContext* gc, osg::Texture2D* texture);
 
+// --- GL objects ----------------------------------------------------------------------------------
+//! Live GL objects of one context, counted by name (glIs*).
+struct GLCounts {
+    int textures = 0, framebuffers = 0, renderbuffers = 0, buffers = 0, programs = 0;
+    bool operator==(const GLCounts& o) const
+    {
+        return textures == o.textures && framebuffers == o.framebuffers && renderbuffers == o.renderbuffers &&
+               buffers == o.buffers && programs == o.programs;
+    }
+};
+std::ostream& operator<<(std::ostream& os, const GLCounts& c);
+//! Every name up to kNames is tested: Mesa hands out names from 1 upwards and reuses freed ones
+//! (the highest live name is returned in `highest`, to check against the bound).
+const GLuint kNames = 1u << 16;
+//! Makes the context current, deletes what OSG was told to release (OSG otherwise deletes it in
+//! later frames, within a time budget), then counts the objects left.
+GLCounts countGLObjects(osg::GraphicsContext* gc, GLuint& highest);
+
 // --- analytic test scenes ------------------------------------------------------------------------
+//! A quad from four corners lit by the kit's scene program with its default material (diffuse
+//! 0.8, ambient 0.2, white), normal (b - a) x (d - a).
+osg::Geode* litQuad(const osg::Vec3& a, const osg::Vec3& b, const osg::Vec3& c, const osg::Vec3& d);
 //! An unlit (emissive) quad from four corners: its pixels are exactly `color`.
 osg::Geode* emissiveQuad(const osg::Vec3& a, const osg::Vec3& b, const osg::Vec3& c, const osg::Vec3& d,
                          const osg::Vec4& color);

@@ -1,5 +1,5 @@
 // Leaks: WaterNodes made and dropped, views added and removed, and thousands of frames leave the
-// number of GL textures, framebuffers, renderbuffers and buffers where it was. (Memory leaks are
+// number of GL textures, framebuffers, renderbuffers, buffers and programs where it was. (Memory leaks are
 // LeakSanitizer's part: this suite runs under scripts/sanitize.sh like every other.)
 #include "GLHarness.h"
 #include <osgWater/WaterNode>
@@ -14,54 +14,6 @@ using namespace testing_gl;
 using namespace osgWater;
 
 namespace {
-
-// GL 3.0 entry points OSG does not wrap, loaded through OSG's own loader
-typedef GLboolean(GL_APIENTRY* IsObject)(GLuint);
-
-struct GLCounts {
-    int textures = 0, framebuffers = 0, renderbuffers = 0, buffers = 0;
-    bool operator==(const GLCounts& o) const
-    {
-        return textures == o.textures && framebuffers == o.framebuffers && renderbuffers == o.renderbuffers &&
-               buffers == o.buffers;
-    }
-};
-
-std::ostream& operator<<(std::ostream& os, const GLCounts& c)
-{
-    return os << c.textures << " textures, " << c.framebuffers << " framebuffers, " << c.renderbuffers
-              << " renderbuffers, " << c.buffers << " buffers";
-}
-
-// Every live name up to kNames (Mesa hands out names from 1 upwards and reuses freed ones; the
-// highest name seen is checked against the bound so a run that outgrows it fails, not passes).
-const GLuint kNames = 1u << 16;
-
-GLCounts countGLObjects(osg::GraphicsContext* gc, GLuint& highest)
-{
-    gc->makeCurrent();
-    // OSG deletes the GL objects it was told to release in later frames, within a time budget; an ASan
-    // build is slow enough that 1000 WaterNodes' worth takes hundreds of frames. Deleting that queue
-    // now leaves only objects nobody released to be counted.
-    osg::flushAllDeletedGLObjects(gc->getState()->getContextID());
-    static IsObject isFramebuffer = nullptr, isRenderbuffer = nullptr, isBuffer = nullptr;
-    if (!isFramebuffer) {
-        osg::setGLExtensionFuncPtr(isFramebuffer, "glIsFramebuffer", "glIsFramebufferEXT");
-        osg::setGLExtensionFuncPtr(isRenderbuffer, "glIsRenderbuffer", "glIsRenderbufferEXT");
-        osg::setGLExtensionFuncPtr(isBuffer, "glIsBuffer", "glIsBufferARB");
-    }
-    GLCounts c;
-    for (GLuint i = 1; i < kNames; ++i) {
-        const bool t = glIsTexture(i), f = isFramebuffer && isFramebuffer(i), r = isRenderbuffer && isRenderbuffer(i),
-                   b = isBuffer && isBuffer(i);
-        c.textures += t;
-        c.framebuffers += f;
-        c.renderbuffers += r;
-        c.buffers += b;
-        if (t || f || r || b) highest = std::max(highest, i);
-    }
-    return c;
-}
 
 osgViewer::View* makeView(osg::GraphicsContext* gc, osg::Node* scene, osg::ref_ptr<osg::Texture2D>& target, double yaw)
 {
