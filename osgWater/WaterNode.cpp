@@ -249,19 +249,13 @@ void WaterNode::cullPass(PassId pass, osgUtil::CullVisitor& cv, const ViewFrame&
         osg::Group::traverse(cv);
         break;
     }
-    case PASS_SURFACE: {
+    case PASS_SURFACE:
+    case PASS_BACKDROP:
+    case PASS_CAP: { // the water program over the scene's, with this view's inputs
         ScopedStateSets states(cv, { scene, v.lighting, p->getWaterInputs(), water });
-        _surface->accept(cv);
-        break;
-    }
-    case PASS_BACKDROP: {
-        ScopedStateSets states(cv, { scene, v.lighting, p->getWaterInputs(), water });
-        _underwater->getBackdrop()->accept(cv);
-        break;
-    }
-    case PASS_CAP: {
-        ScopedStateSets states(cv, { scene, v.lighting, p->getWaterInputs(), water });
-        _underwater->getCap()->accept(cv);
+        osg::Node* node = pass == PASS_SURFACE ? static_cast<osg::Node*>(_surface.get())
+                        : pass == PASS_CAP ? _underwater->getCap() : _underwater->getBackdrop();
+        node->accept(cv);
         break;
     }
     case PASS_GLOW_COMPOSITE: p->getGlow()->getComposite()->accept(cv); break;
