@@ -51,32 +51,34 @@ void GpuTimer::detach(osg::Camera* camera)
 
 void GpuTimer::begin(osg::RenderInfo& ri)
 {
-    if (_failed) return;
+    Query& q = _queries[ri.getContextID()];
+    if (q.failed) return;
     osg::GLExtensions* ext = ri.getState()->get<osg::GLExtensions>();
     if (!ext || !ext->isTimerQuerySupported || !ext->glGenQueries) {
         OSG_NOTICE << "osgWater::GpuTimer: no GL timer queries here, pass times are not measured" << std::endl;
-        _failed = true;
+        q.failed = true;
         return;
     }
-    if (_query == 0) ext->glGenQueries(1, &_query);
-    if (_pending) {
+    if (q.id == 0) ext->glGenQueries(1, &q.id);
+    if (q.pending) {
         GLint available = 0;
-        ext->glGetQueryObjectiv(_query, GL_QUERY_RESULT_AVAILABLE, &available);
+        ext->glGetQueryObjectiv(q.id, GL_QUERY_RESULT_AVAILABLE, &available);
         if (!available) return; // last frame's result not there yet: skip this frame's measurement
         GLuint64 ns = 0;
-        ext->glGetQueryObjectui64v(_query, GL_QUERY_RESULT, &ns);
+        ext->glGetQueryObjectui64v(q.id, GL_QUERY_RESULT, &ns);
         _ms = double(ns) * 1.0e-6;
-        _pending = false;
+        q.pending = false;
     }
-    ext->glBeginQuery(GL_TIME_ELAPSED, _query);
-    _active = true;
+    ext->glBeginQuery(GL_TIME_ELAPSED, q.id);
+    q.active = true;
 }
 
 void GpuTimer::end(osg::RenderInfo& ri)
 {
-    if (!_active) return;
+    Query& q = _queries[ri.getContextID()];
+    if (!q.active) return;
     osg::GLExtensions* ext = ri.getState()->get<osg::GLExtensions>();
     ext->glEndQuery(GL_TIME_ELAPSED);
-    _active = false;
-    _pending = true;
+    q.active = false;
+    q.pending = true;
 }
