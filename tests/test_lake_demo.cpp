@@ -2,6 +2,7 @@
 // be there if the water works: trees mirrored below the shoreline, the bed visible through shallow
 // water and not through deep water. Each effect is switched off once to show the check depends on it.
 #include "GLHarness.h"
+#include <unistd.h>
 #include "../apps/osgwatergenlake/LakeModel.h"
 #include <osgWater/WaterNode>
 #include <osgDB/ReadFile>
@@ -26,7 +27,9 @@ struct Shot {
 bool runDemo(const std::string& extra, Shot& shot, std::string& why)
 {
     if (!std::getenv("DISPLAY")) { why = "DISPLAY is not set"; return false; }
-    const std::string png = std::string(OSGWATER_TEST_TMP) + "/lake_" + std::to_string(std::hash<std::string>()(extra) % 100000) + ".png";
+    // the process id too: tests run in parallel (ctest -j) ask for the same options
+    const std::string png = std::string(OSGWATER_TEST_TMP) + "/lake_" + std::to_string(getpid()) + "_"
+                            + std::to_string(std::hash<std::string>()(extra) % 100000) + ".png";
     std::remove(png.c_str());
     char cmd[2048];
     std::snprintf(cmd, sizeof(cmd),
@@ -38,6 +41,7 @@ bool runDemo(const std::string& extra, Shot& shot, std::string& why)
     if (rc != 0) { why = std::string("osgwaterlake failed: ") + cmd; return false; }
     shot.image = osgDB::readRefImageFile(png);
     if (!shot.image.valid()) { why = "no screenshot " + png; return false; }
+    std::remove(png.c_str());
     return true;
 }
 
