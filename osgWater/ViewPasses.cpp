@@ -65,19 +65,26 @@ void ViewPasses::update(const PassContext& ctx, const PassPlan& plan, const Scen
 {
     _plan = plan;
     _eyeBelow = ctx.eyeBelow;
+    // A pass sees the underwater scene only across the surface from its eye: the reflection from
+    // below, the refraction from above. On the eye's own side it draws the scene above the water,
+    // and what lies below the level there is the band its clip plane keeps to clear the waves: no
+    // caustics for it (on a software rasteriser their fetches cost every fragment of the pass).
     if (plan.runs(PASS_REFLECTION)) {
         // under water the mirror shows the underwater scene through water (thesis §7.5: eq. 10
         // with d = |A2 - C2| in this pass): the view's fog comes along
+        SceneLighting l = lighting;
+        if (!ctx.eyeBelow) l.caustics = nullptr;
         _reflection->update(ctx);
-        _reflection->applyLighting(lighting);
+        _reflection->applyLighting(l);
     }
     if (plan.runs(PASS_REFRACTION)) {
         // from above, the water shader attenuates the refracted colour itself; from below, this
         // pass sees the air: no fog either way
+        SceneLighting l = lighting;
+        l.fogAttenuation = 0.0f;
+        if (ctx.eyeBelow) l.caustics = nullptr;
         _refraction->update(ctx);
-        SceneLighting noFog = lighting;
-        noFog.fogAttenuation = 0.0f;
-        _refraction->applyLighting(noFog);
+        _refraction->applyLighting(l);
     }
     if (!plan.runs(PASS_SURFACE) && !plan.runs(PASS_CAP)) return; // the water inputs are read by nothing
 
