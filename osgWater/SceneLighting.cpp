@@ -42,3 +42,9 @@ void osgWater::applySceneLighting(osg::StateSet* ss, const SceneLighting& l, con
         ss->removeTextureAttribute(UNIT_SUN_DEPTH, osg::StateAttribute::TEXTURE);
     }
 }
+
+void osgWater::setDefineIf(osg::StateSet* ss, const char* name, bool on)
+{
+    if (on) ss->setDefine(name);
+    else ss->removeDefine(name);
+}

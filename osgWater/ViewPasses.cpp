@@ -5,16 +5,6 @@
 
 using namespace osgWater;
 
-namespace {
-
-void setDefine(osg::StateSet* ss, const char* name, bool on)
-{
-    if (on) ss->setDefine(name);
-    else ss->removeDefine(name);
-}
-
-}
-
 ViewPasses::ViewPasses(osg::Group* scene, osg::StateSet* sceneState, osg::StateSet* waterState, osg::StateSet* lighting,
                        int reflectionSize, int refractionSize)
     : _scene(scene), _sceneState(sceneState), _waterState(waterState), _lighting(lighting)
@@ -97,10 +87,10 @@ void ViewPasses::update(const PassContext& ctx, const PassPlan& plan, const Scen
     ss->getUniform("osgWater_RefractionProj")->set(osg::Matrixf(rp));
     ss->getUniform("osgWater_RefractionInvProj")->set(osg::Matrixf(osg::Matrixd::inverse(rp)));
     ss->getUniform("osgWater_EyeLocal")->set(osg::Vec3f(eyePosition(ctx.view)));
-    setDefine(ss, "OSGWATER_EYE_BELOW", ctx.eyeBelow);
+    setDefineIf(ss, "OSGWATER_EYE_BELOW", ctx.eyeBelow);
     // the shader reads a pass's texture only when the pass ran this frame
-    setDefine(ss, "OSGWATER_NO_REFLECTION", !plan.runs(PASS_REFLECTION));
-    setDefine(ss, "OSGWATER_NO_REFRACTION", !plan.runs(PASS_REFRACTION));
+    setDefineIf(ss, "OSGWATER_NO_REFLECTION", !plan.runs(PASS_REFLECTION));
+    setDefineIf(ss, "OSGWATER_NO_REFRACTION", !plan.runs(PASS_REFRACTION));
 }
 
 void ViewPasses::resizeGLObjectBuffers(unsigned int maxSize)

@@ -3,6 +3,7 @@
 #include <osgWater/WaterSurface>
 #include <osgWater/Shaders>
 #include <osgWater/PassTable>
+#include <osgWater/SceneLighting>
 #include <osg/Material>
 #include <osg/Texture2D>
 #include <osg/Image>
@@ -26,12 +27,6 @@ osg::Texture2D* whiteTexture()
     t->setFilter(osg::Texture::MIN_FILTER, osg::Texture::NEAREST);
     t->setFilter(osg::Texture::MAG_FILTER, osg::Texture::NEAREST);
     return t;
-}
-
-void setDefine(osg::StateSet* ss, const char* name, bool on)
-{
-    if (on) ss->setDefine(name);
-    else ss->removeDefine(name);
 }
 
 }
@@ -105,8 +100,8 @@ void WaterStateSets::applySettings(const WaterSettings& s, const WaterSurface& s
     }
     w->getUniform("osgWater_WaveCount")->set(int(waves.size()));
 
-    setDefine(w, "OSGWATER_GRID", surface.usesGrid());
-    setDefine(w, "OSGWATER_ONE_STEP", s.getRefractionLookup() == WaterSettings::ONE_STEP);
+    setDefineIf(w, "OSGWATER_GRID", surface.usesGrid());
+    setDefineIf(w, "OSGWATER_ONE_STEP", s.getRefractionLookup() == WaterSettings::ONE_STEP);
     w->setDefine("OSGWATER_FRESNEL", s.getFresnelModel() == WaterSettings::FRESNEL_EXACT ? "2"
                                      : s.getFresnelModel() == WaterSettings::FRESNEL_POWER ? "1" : "0");
     w->setDefine("OSGWATER_UNDERWATER", s.getUnderwaterModel() == WaterSettings::UNDERWATER_THESIS ? "1" : "0");
