@@ -2,6 +2,8 @@
 #include <osgWater/PassMath>
 #include <osgWater/DrawNodes>
 #include <osgUtil/CullVisitor>
+#include <osgUtil/IntersectionVisitor>
+#include <osgUtil/LineSegmentIntersector>
 #include <osg/ComputeBoundsVisitor>
 #include <OpenThreads/ScopedLock>
 #include <algorithm>
@@ -96,7 +98,10 @@ void WaterNode::traverse(osg::NodeVisitor& nv)
 {
     if (nv.getVisitorType() == osg::NodeVisitor::UPDATE_VISITOR) {
         refreshStates();
-        if (nv.getFrameStamp()) _states.applyTime(*_surface, nv.getFrameStamp()->getSimulationTime());
+        if (nv.getFrameStamp()) {
+            _simulationTime = nv.getFrameStamp()->getSimulationTime();
+            _states.applyTime(*_surface, _simulationTime);
+        }
         osg::Group::traverse(nv);
         // bounds are computed lazily; views may cull in parallel threads: compute them here, once
         getBound();
@@ -108,8 +113,48 @@ void WaterNode::traverse(osg::NodeVisitor& nv)
         return;
     }
     osg::Group::traverse(nv);
-    // intersections, statistics and the like: the surface takes part like a child
-    _surface->accept(nv);
+    // intersections, statistics and the like: the surface takes part like a child; a line
+    // segment meets the animated grid, not its flat CPU geometry
+    osgUtil::IntersectionVisitor* iv = nv.asIntersectionVisitor();
+    if (iv && _surface->usesGrid() && dynamic_cast<osgUtil::LineSegmentIntersector*>(iv->getIntersector()))
+        intersectSurface(*iv);
+    else
+        _surface->accept(nv);
+}
+
+void WaterNode::intersectSurface(osgUtil::IntersectionVisitor& iv)
+{
+    osgUtil::LineSegmentIntersector* lsi = static_cast<osgUtil::LineSegmentIntersector*>(iv.getIntersector());
+    if (lsi->reachedLimit()) return;
+    // the visitor's intersector is the user's, in its own frame: bring its segment into this
+    // node's local frame the way OSG's clones do
+    const osg::Matrix toLocal = osgUtil::LineSegmentIntersector::getTransformation(iv, lsi->getCoordinateFrame());
+    double ratio;
+    osg::Vec3d point, normal;
+    if (!_surface->intersect(lsi->getStart() * toLocal, lsi->getEnd() * toLocal, getSimulationTime(), ratio, point,
+                             normal))
+        return;
+    osgUtil::LineSegmentIntersector::Intersection hit;
+    hit.ratio = ratio;
+    hit.nodePath = iv.getNodePath();
+    hit.nodePath.push_back(_surface.get());
+    hit.drawable = _surface->getGeometry();
+    hit.matrix = iv.getModelMatrix();
+    hit.localIntersectionPoint = point;
+    hit.localIntersectionNormal = normal;
+    lsi->insertIntersection(hit);
+}
+
+double WaterNode::getSurfaceHeightAt(double x, double y, osg::Vec3d* normal) const
+{
+    return getSurfaceHeightAt(x, y, getSimulationTime(), normal);
+}
+
+double WaterNode::getSurfaceHeightAt(double x, double y, double t, osg::Vec3d* normal) const
+{
+    const bool grid = _surface->usesGrid();
+    if (normal) *normal = grid ? _surface->normal(x, y, t) : osg::Vec3d(0.0, 0.0, 1.0);
+    return grid ? _surface->height(x, y, t) : _surface->getLevel();
 }
 
 double WaterNode::eyeHeightAboveSurface(const osg::Vec3d& eye, double t) const

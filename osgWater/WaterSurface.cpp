@@ -195,6 +195,72 @@ osg::Vec3d WaterSurface::normal(double x, double y, double t) const
     return n;
 }
 
+bool WaterSurface::intersect(const osg::Vec3d& start, const osg::Vec3d& end, double t, double& ratio,
+                             osg::Vec3d& point, osg::Vec3d& normal) const
+{
+    // where the surface can be: the grid's square (the mesh's bounds), between its lowest troughs
+    // and highest crests
+    double x0, y0, x1, y1;
+    if (usesGrid()) {
+        x0 = _center.x() - 0.5 * _size;
+        y0 = _center.y() - 0.5 * _size;
+        x1 = x0 + _size;
+        y1 = y0 + _size;
+    } else {
+        const osg::BoundingBox& b = _userMesh->getBoundingBox();
+        x0 = b.xMin(), y0 = b.yMin(), x1 = b.xMax(), y1 = b.yMax();
+    }
+    const double a = usesGrid() ? getMaxAmplitude() : 0.0;
+    const double boxLo[3] = { x0, y0, _level - a }, boxHi[3] = { x1, y1, _level + a };
+    const osg::Vec3d d = end - start;
+    double s0 = 0.0, s1 = 1.0; // the segment's part inside that box (slab clipping)
+    for (int i = 0; i < 3; ++i) {
+        if (std::fabs(d[i]) < 1e-300) {
+            if (start[i] < boxLo[i] || start[i] > boxHi[i]) return false;
+            continue;
+        }
+        double ta = (boxLo[i] - start[i]) / d[i], tb = (boxHi[i] - start[i]) / d[i];
+        if (ta > tb) std::swap(ta, tb);
+        s0 = std::max(s0, ta);
+        s1 = std::min(s1, tb);
+        if (s0 > s1) return false;
+    }
+    // signed height above the surface along the segment
+    auto above = [&](double s) {
+        const osg::Vec3d p = start + d * s;
+        return p.z() - (usesGrid() ? height(p.x(), p.y(), t) : _level);
+    };
+    double shortest = 1e30;
+    for (const Wave& w : _waves) shortest = std::min(shortest, double(w.wavelength));
+    const double horizontal = osg::Vec2d(d.x(), d.y()).length() * (s1 - s0);
+    const int steps = usesGrid() && !_waves.empty()
+                          ? int(std::min(1.0e5, std::max(2.0, std::ceil(horizontal / (shortest / 16.0)))))
+                          : 1;
+    // the first sign change between samples, then bisection (lo keeps the start's side)
+    double sa = s0, fa = above(s0);
+    bool found = fa == 0.0;
+    ratio = s0;
+    for (int i = 1; i <= steps && !found; ++i) {
+        const double sb = s0 + (s1 - s0) * double(i) / steps, fb = above(sb);
+        if ((fb > 0.0) != (fa > 0.0) || fb == 0.0) {
+            double lo = sa, hi = sb;
+            for (int k = 0; k < 80; ++k) {
+                const double sm = 0.5 * (lo + hi);
+                if ((above(sm) > 0.0) == (fa > 0.0)) lo = sm;
+                else hi = sm;
+            }
+            ratio = 0.5 * (lo + hi);
+            found = true;
+        }
+        sa = sb;
+        fa = fb;
+    }
+    if (!found) return false;
+    point = start + d * ratio;
+    normal = usesGrid() ? this->normal(point.x(), point.y(), t) : osg::Vec3d(0.0, 0.0, 1.0);
+    return true;
+}
+
 void WaterSurface::rebuild()
 {
     ++_revision;

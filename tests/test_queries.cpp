@@ -1,0 +1,173 @@
+// Asking the water where it is: heights and normals of the animated surface at the frame's time,
+// and line-segment picking that meets the animated surface (the grid's CPU geometry is flat).
+// Expectations from the wave formula evaluated here in long double, not from the kit's own code.
+#include <osgWater/WaterNode>
+#include <osg/FrameStamp>
+#include <osg/MatrixTransform>
+#include <osgUtil/IntersectionVisitor>
+#include <osgUtil/LineSegmentIntersector>
+#include <osgUtil/UpdateVisitor>
+#include <gtest/gtest.h>
+#include <atomic>
+#include <cmath>
+#include <thread>
+#include <vector>
+
+using namespace osgWater;
+
+namespace {
+
+// h(x, y, t) = level + sum a sin(k (d . p) - sqrt(g k) t + phase)
+long double waveHeight(const WaterSurface& s, long double x, long double y, long double t)
+{
+    const long double twoPi = 6.283185307179586476925286766559L;
+    long double h = s.getLevel();
+    for (const Wave& w : s.getWaves()) {
+        const long double k = twoPi / (long double)w.wavelength;
+        h += (long double)w.amplitude
+             * std::sin(k * ((long double)w.direction.x() * x + (long double)w.direction.y() * y) - std::sqrt(9.81L * k) * t
+                        + (long double)w.phase);
+    }
+    return h;
+}
+
+void update(osg::Node* node, double t, unsigned int frame)
+{
+    osg::ref_ptr<osg::FrameStamp> fs = new osg::FrameStamp;
+    fs->setSimulationTime(t);
+    fs->setFrameNumber(frame);
+    osgUtil::UpdateVisitor uv;
+    uv.setFrameStamp(fs.get());
+    node->accept(uv);
+}
+
+// the nearest hit of a segment in the node's frame, or false
+bool pick(osg::Node* root, const osg::Vec3d& a, const osg::Vec3d& b, osgUtil::LineSegmentIntersector::Intersection& hit)
+{
+    osg::ref_ptr<osgUtil::LineSegmentIntersector> lsi = new osgUtil::LineSegmentIntersector(a, b);
+    osgUtil::IntersectionVisitor iv(lsi.get());
+    root->accept(iv);
+    if (!lsi->containsIntersections()) return false;
+    hit = lsi->getFirstIntersection();
+    return true;
+}
+
+// The kit wraps each wave's phase omega t - phase in double and hands it on as a float, as the
+// shader gets it: the heights it reports are the drawn surface's, within 2^-24 x 2 pi x the sum of
+// the amplitudes of the exact wave sum (3e-8 m for the default waves)
+const double kPhaseRounding = 1e-7;
+
+}
+
+TEST(Queries, HeightAndNormalFollowTheLastFramesTime)
+{
+    osg::ref_ptr<WaterNode> water = new WaterNode;
+    water->getSurface()->setLevel(1.5);
+    EXPECT_EQ(water->getSimulationTime(), 0.0);
+    update(water.get(), 12.25, 1);
+    EXPECT_EQ(water->getSimulationTime(), 12.25);
+    const WaterSurface& s = *water->getSurface();
+    for (double x : { -30.0, -1.3, 0.0, 7.7, 42.0 })
+        for (double y : { -12.0, 0.4, 25.5 }) {
+            osg::Vec3d n;
+            const double h = water->getSurfaceHeightAt(x, y, &n);
+            EXPECT_NEAR(h, double(waveHeight(s, x, y, 12.25L)), kPhaseRounding) << x << ", " << y;
+            // the normal is perpendicular to the surface: finite differences of the formula
+            const long double e = 1e-4L;
+            const long double hx = (waveHeight(s, x + e, y, 12.25L) - waveHeight(s, x - e, y, 12.25L)) / (2 * e);
+            const long double hy = (waveHeight(s, x, y + e, 12.25L) - waveHeight(s, x, y - e, 12.25L)) / (2 * e);
+            osg::Vec3d expected(-double(hx), -double(hy), 1.0);
+            expected.normalize();
+            EXPECT_NEAR(n.length(), 1.0, 1e-12);
+            EXPECT_NEAR((n - expected).length(), 0.0, 1e-6) << x << ", " << y;
+            // the overload with a time
+            EXPECT_NEAR(water->getSurfaceHeightAt(x, y, 3.0), double(waveHeight(s, x, y, 3.0L)), kPhaseRounding);
+        }
+    // a user mesh: the level, straight up
+    osg::ref_ptr<osg::Geometry> mesh = new osg::Geometry;
+    osg::ref_ptr<osg::Vec3Array> v = new osg::Vec3Array;
+    v->push_back(osg::Vec3(-5, -5, 1.5f)); v->push_back(osg::Vec3(5, -5, 1.5f)); v->push_back(osg::Vec3(0, 5, 1.5f));
+    mesh->setVertexArray(v.get());
+    mesh->addPrimitiveSet(new osg::DrawArrays(GL_TRIANGLES, 0, 3));
+    water->getSurface()->setMesh(mesh.get());
+    osg::Vec3d n;
+    EXPECT_EQ(water->getSurfaceHeightAt(1.0, 2.0, &n), 1.5);
+    EXPECT_EQ(n, osg::Vec3d(0.0, 0.0, 1.0));
+}
+
+TEST(Queries, QueriesAreSafeWhileFramesAdvance)
+{
+    // four threads query while the update traversal advances the time: every answer is the
+    // surface at one of the frames' times
+    osg::ref_ptr<WaterNode> water = new WaterNode;
+    const WaterSurface& s = *water->getSurface();
+    std::atomic<bool> done{ false };
+    std::atomic<int> wrong{ 0 }, asked{ 0 };
+    std::vector<std::thread> readers;
+    for (int r = 0; r < 4; ++r)
+        readers.emplace_back([&] {
+            while (!done) {
+                const double t = water->getSimulationTime();
+                const double h = water->getSurfaceHeightAt(3.0, -2.0, t);
+                if (std::fabs(h - double(waveHeight(s, 3.0L, -2.0L, t))) > kPhaseRounding) ++wrong;
+                ++asked;
+            }
+        });
+    for (unsigned int f = 1; f <= 2000 || asked < 10000; ++f) update(water.get(), f / 60.0, f);
+    done = true;
+    for (std::thread& t : readers) t.join();
+    EXPECT_EQ(wrong, 0);
+    EXPECT_GT(asked, 0);
+}
+
+TEST(Queries, PickingMeetsTheAnimatedSurfaceNotTheFlatGrid)
+{
+    osg::ref_ptr<WaterNode> water = new WaterNode;
+    water->getSurface()->setLevel(0.5);
+    water->getSurface()->setWaves({ Wave{ osg::Vec2(1, 0), 6.0f, 0.4f, 0.3f }, Wave{ osg::Vec2(0.6f, 0.8f), 2.5f, 0.1f, 1.0f } });
+    update(water.get(), 7.5, 1);
+    const WaterSurface& s = *water->getSurface();
+    int hits = 0;
+    for (double x = -20.0; x <= 20.0; x += 3.7)
+        for (double y : { -15.0, 2.2, 18.0 }) {
+            // vertical, oblique and grazing (1:20) rays from above
+            const osg::Vec3d targets[] = { osg::Vec3d(x, y, -10), osg::Vec3d(x + 8, y - 3, -10), osg::Vec3d(x + 40, y, -1.5) };
+            for (const osg::Vec3d& b : targets) {
+                const osg::Vec3d a(x, y, 10);
+                const osg::Vec3d a2 = b.z() > -5 ? osg::Vec3d(x, y, 0.5 + 0.5) : a;
+                osgUtil::LineSegmentIntersector::Intersection hit;
+                if (!pick(water.get(), a2, b, hit)) continue;
+                ++hits;
+                const osg::Vec3d p = hit.getWorldIntersectPoint();
+                EXPECT_NEAR(p.z(), double(waveHeight(s, p.x(), p.y(), 7.5L)), 1e-6) << "not on the surface";
+                // on the segment, and the first crossing: above the surface all the way before it
+                EXPECT_NEAR((a2 + (b - a2) * hit.ratio - p).length(), 0.0, 1e-9);
+                for (int i = 0; i < 200; ++i) {
+                    const osg::Vec3d q = a2 + (b - a2) * (hit.ratio * i / 200.0);
+                    EXPECT_GT(q.z(), double(waveHeight(s, q.x(), q.y(), 7.5L)) - 1e-9) << "an earlier crossing was missed";
+                }
+                osg::Vec3d n;
+                water->getSurfaceHeightAt(p.x(), p.y(), &n);
+                EXPECT_NEAR((hit.getWorldIntersectNormal() - n).length(), 0.0, 1e-9);
+            }
+        }
+    EXPECT_GT(hits, 30);
+    // from below, the first crossing from below; outside the grid's square, nothing
+    osgUtil::LineSegmentIntersector::Intersection hit;
+    ASSERT_TRUE(pick(water.get(), osg::Vec3d(1, 2, -3), osg::Vec3d(4, 2, 5), hit));
+    EXPECT_NEAR(hit.getWorldIntersectPoint().z(), double(waveHeight(s, hit.getWorldIntersectPoint().x(), 2.0L, 7.5L)), 1e-6);
+    EXPECT_FALSE(pick(water.get(), osg::Vec3d(80, 0, 10), osg::Vec3d(80, 0, -10), hit)) << "beyond the 100 m grid";
+}
+
+TEST(Queries, PickingThroughATransformReportsWorldPoints)
+{
+    osg::ref_ptr<WaterNode> water = new WaterNode;
+    osg::ref_ptr<osg::MatrixTransform> moved = new osg::MatrixTransform(osg::Matrixd::translate(100.0, -50.0, 3.0));
+    moved->addChild(water.get());
+    update(moved.get(), 2.0, 1);
+    osgUtil::LineSegmentIntersector::Intersection hit;
+    ASSERT_TRUE(pick(moved.get(), osg::Vec3d(104, -47, 20), osg::Vec3d(104, -47, -20), hit));
+    const osg::Vec3d p = hit.getWorldIntersectPoint();
+    EXPECT_NEAR(p.x(), 104.0, 1e-9);
+    EXPECT_NEAR(p.z(), 3.0 + double(waveHeight(*water->getSurface(), 4.0L, 3.0L, 2.0L)), 1e-6);
+}
