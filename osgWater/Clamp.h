@@ -8,19 +8,24 @@
 namespace osgWater {
 namespace detail {
 
-inline float clampOr(const char* owner, const char* name, float v, float lo, float hi, float fallback)
+template <typename T> inline T clampTo(const char* owner, const char* name, T v, T lo, T hi, T fallback)
 {
     if (std::isnan(v)) {
         OSG_WARN << owner << ": " << name << " is NaN, using " << fallback << std::endl;
         return fallback;
     }
     if (v < lo || v > hi) {
-        const float c = std::min(std::max(v, lo), hi);
+        const T c = std::min(std::max(v, lo), hi);
         OSG_WARN << owner << ": " << name << " = " << v << " out of [" << lo << ", " << hi << "], clamped to " << c
                  << std::endl;
         return c;
     }
     return v;
+}
+
+inline float clampOr(const char* owner, const char* name, float v, float lo, float hi, float fallback)
+{
+    return clampTo<float>(owner, name, v, lo, hi, fallback);
 }
 
 inline int clampInt(const char* owner, const char* name, int v, int lo, int hi)
