@@ -2,26 +2,16 @@
 // damping, written and read back through .osgt/.osgb exactly. No GPU.
 #include <osgWater/FloatingTransform>
 #include <osgWater/WaterNode>
-#include <osg/FrameStamp>
 #include <osgDB/ReadFile>
 #include <osgDB/WriteFile>
-#include <osgUtil/UpdateVisitor>
+#include "UpdateTraversal.h"
 #include <gtest/gtest.h>
 #include <cmath>
 
 using namespace osgWater;
+using testing_update::update;
 
 namespace {
-
-void update(osg::Node* node, double t, unsigned int frame)
-{
-    osg::ref_ptr<osg::FrameStamp> fs = new osg::FrameStamp;
-    fs->setSimulationTime(t);
-    fs->setFrameNumber(frame);
-    osgUtil::UpdateVisitor uv;
-    uv.setFrameStamp(fs.get());
-    node->accept(uv);
-}
 
 osg::Vec3d axis(const osg::Matrixd& m, int i)
 {

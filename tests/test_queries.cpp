@@ -2,11 +2,10 @@
 // and line-segment picking that meets the animated surface (the grid's CPU geometry is flat).
 // Expectations from the wave formula evaluated here in long double, not from the kit's own code.
 #include <osgWater/WaterNode>
-#include <osg/FrameStamp>
 #include <osg/MatrixTransform>
 #include <osgUtil/IntersectionVisitor>
 #include <osgUtil/LineSegmentIntersector>
-#include <osgUtil/UpdateVisitor>
+#include "UpdateTraversal.h"
 #include <gtest/gtest.h>
 #include <atomic>
 #include <cmath>
@@ -14,6 +13,7 @@
 #include <vector>
 
 using namespace osgWater;
+using testing_update::update;
 
 namespace {
 
@@ -29,16 +29,6 @@ long double waveHeight(const WaterSurface& s, long double x, long double y, long
                         + (long double)w.phase);
     }
     return h;
-}
-
-void update(osg::Node* node, double t, unsigned int frame)
-{
-    osg::ref_ptr<osg::FrameStamp> fs = new osg::FrameStamp;
-    fs->setSimulationTime(t);
-    fs->setFrameNumber(frame);
-    osgUtil::UpdateVisitor uv;
-    uv.setFrameStamp(fs.get());
-    node->accept(uv);
 }
 
 // the nearest hit of a segment in the node's frame, or false
