@@ -2,6 +2,8 @@
 // be there if the water works: trees mirrored below the shoreline, the bed visible through shallow
 // water and not through deep water. Each effect is switched off once to show the check depends on it.
 #include "GLHarness.h"
+#include "../apps/common/Floaters.h"
+#include "../apps/common/SceneWater.h"
 #include <unistd.h>
 #include "../apps/osgwatergenlake/LakeModel.h"
 #include <osgWater/WaterNode>
@@ -195,4 +197,41 @@ TEST(LakeDemo, UnderwaterViewIsFiniteAndFadesWithDistance)
     ASSERT_LT((nearBed - eye).length(), (farBed - eye).length());
     EXPECT_GT(distanceToWater(nearBed), distanceToWater(farBed) + 0.01f);
     EXPECT_LT(distanceToWater(farBed), 0.05f) << "~10 m of water (k = 0.5) leave under 1% of the bed";
+}
+
+TEST(LakeDemo, TheBuoyAndTheBoatRideTheWaves)
+{
+    // the demo's floaters on the lake, drawn by a viewer frame after frame: each one's origin at
+    // the water's height at its position, less its draft, within 1 mm, and its z axis along the
+    // surface normal
+    testing_gl::Harness h(64, 48);
+    REQUIRE_GL(h);
+    osg::ref_ptr<osg::Node> lake = osgDB::readRefNodeFile(OSGWATER_LAKE_SCENE);
+    ASSERT_TRUE(lake.valid());
+    osg::ref_ptr<osgWater::WaterNode> water = osgWaterApps::findOrAddWater(lake, OSGWATER_LAKE_SCENE);
+    osg::ref_ptr<osg::Switch> floaters = osgWaterApps::addFloaters(water.get(), osgWaterApps::kLakeBuoy, osgWaterApps::kLakeBoat, true);
+    ASSERT_EQ(floaters->getNumChildren(), 2u);
+    h.setScene(lake.get());
+    h.lookAt(osg::Vec3d(0, -42, 4.5), osg::Vec3d(0, -24, 0));
+    double worst = 0.0, rise = 0.0;
+    double first[2] = { 0.0, 0.0 };
+    for (int f = 0; f < 60; ++f) {
+        const double t = 10.0 + f / 30.0;
+        h.frame(t);
+        for (unsigned int i = 0; i < 2; ++i) {
+            const osgWater::FloatingTransform* ft = dynamic_cast<const osgWater::FloatingTransform*>(floaters->getChild(i));
+            ASSERT_TRUE(ft);
+            const osg::Vec2d at = ft->getPosition();
+            osg::Vec3d n;
+            const double z = water->getSurfaceHeightAt(at.x(), at.y(), t, &n) - ft->getDraft();
+            const osg::Matrixd& m = ft->getMatrix();
+            worst = std::max(worst, std::fabs(m.getTrans().z() - z));
+            EXPECT_NEAR((osg::Vec3d(m(2, 0), m(2, 1), m(2, 2)) - n).length(), 0.0, 1e-6) << ft->getName();
+            if (f == 0) first[i] = m.getTrans().z();
+            rise = std::max(rise, std::fabs(m.getTrans().z() - first[i]));
+        }
+    }
+    EXPECT_LT(worst, 1e-3) << "a floater left the surface";
+    EXPECT_GT(rise, 0.005) << "the floaters should move with the waves";
+    EXPECT_TRUE(testing_gl::allFinite(h.readColor().get()));
 }

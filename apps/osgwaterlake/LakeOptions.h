@@ -21,6 +21,7 @@ struct LakeOptions {
     bool compareGlow = false;      // headless: time glow off and on
     std::string screenshot = "osgwaterlake.png";
     bool hud = true;
+    bool floaters = false;         // the buoy and the boat (key b)
 
     static void describe(osg::ApplicationUsage& usage);
     //! Reads the options; false (with a message) on an error.

@@ -28,6 +28,11 @@ bool WaterKeys::handle(const osgGA::GUIEventAdapter& ea, osgGA::GUIActionAdapter
         m->setByMatrix(goBelow ? _below : _above);
         return true;
     }
+    case 'b':
+        if (!_floaters.valid() || _floaters->getNumChildren() == 0) return false;
+        if (_floaters->getValue(0)) _floaters->setAllChildrenOff();
+        else _floaters->setAllChildrenOn();
+        return true;
     case 'g': // auto -> copy -> texture -> cpu -> auto
         s.setCausticsGather(WaterSettings::CausticsGather((int(s.getCausticsGather()) + 1) % 4));
         return true;
@@ -65,5 +70,6 @@ void WaterKeys::getUsage(osg::ApplicationUsage& u) const
     u.addKeyboardMouseBinding("u", "Go under water / back above it");
     u.addKeyboardMouseBinding("n", "Next underwater model (physical, thesis)");
     u.addKeyboardMouseBinding("l", "Toggle the sun's glow");
+    u.addKeyboardMouseBinding("b", "Show / hide the buoy and the boat");
     u.addKeyboardMouseBinding("Arrows, Page Up/Down", "Move the camera");
 }

@@ -4,6 +4,7 @@
 #include <osgGA/GUIEventHandler>
 #include <osgGA/FirstPersonManipulator>
 #include <osg/observer_ptr>
+#include <osg/Switch>
 
 //! Toggles water effects and techniques on key presses.
 class WaterKeys : public osgGA::GUIEventHandler
@@ -13,12 +14,15 @@ public:
     //! 'u' moves the camera between these two views (above the water, under it).
     void setViews(osgGA::CameraManipulator* manipulator, const osg::Matrixd& above, const osg::Matrixd& below)
     { _manipulator = manipulator; _above = above; _below = below; }
+    //! 'b' shows and hides these (the buoy and the boat).
+    void setFloaters(osg::Switch* floaters) { _floaters = floaters; }
     bool handle(const osgGA::GUIEventAdapter& ea, osgGA::GUIActionAdapter& aa) override;
     void getUsage(osg::ApplicationUsage& usage) const override;
 
 private:
     osg::ref_ptr<osgWater::WaterNode> _water;
     osg::observer_ptr<osgGA::CameraManipulator> _manipulator;
+    osg::ref_ptr<osg::Switch> _floaters;
     osg::Matrixd _above, _below; // camera (inverse view) matrices
 };
 

@@ -5,6 +5,7 @@
 #include "Hud.h"
 #include "LakeOptions.h"
 #include "WaterKeys.h"
+#include "../common/Floaters.h"
 #include "../common/FrameTimer.h"
 #include "../common/SceneWater.h"
 #include <osgDB/FileNameUtils>
@@ -126,7 +127,7 @@ int runHeadless(osgViewer::Viewer& viewer, osg::Switch* scenes, osgWater::WaterN
     return 0;
 }
 
-int runWindowed(osgViewer::Viewer& viewer, osgWater::WaterNode* water, const LakeOptions& o)
+int runWindowed(osgViewer::Viewer& viewer, osgWater::WaterNode* water, osg::Switch* floaters, const LakeOptions& o)
 {
     osg::ref_ptr<WalkManipulator> walker = new WalkManipulator;
     walker->setHomePosition(o.eye, o.center, o.up);
@@ -141,6 +142,7 @@ int runWindowed(osgViewer::Viewer& viewer, osgWater::WaterNode* water, const Lak
     viewer.addEventHandler(new osgViewer::StatsHandler);
     viewer.addEventHandler(new osgViewer::HelpHandler(osg::ApplicationUsage::instance()));
     osg::ref_ptr<WaterKeys> keys = new WaterKeys(water);
+    keys->setFloaters(floaters);
     const osg::Vec3d aboveEye = o.underwater ? LakeOptions().eye : o.eye;
     const osg::Vec3d aboveCenter = o.underwater ? LakeOptions().center : o.center;
     keys->setViews(manipulators.get(), osg::Matrixd::inverse(osg::Matrixd::lookAt(aboveEye, aboveCenter, o.up)),
@@ -189,6 +191,8 @@ int main(int argc, char** argv)
     osg::ref_ptr<osgWater::WaterNode> water = osgWaterApps::findOrAddWater(loaded, file);
     o.apply(*water);
     water->setPassTimingEnabled(true);
+    // a buoy and a boat in the default view's water, riding the waves (--floaters, key b)
+    osg::ref_ptr<osg::Switch> floaters = osgWaterApps::addFloaters(water.get(), osgWaterApps::kLakeBuoy, osgWaterApps::kLakeBoat, o.floaters);
 
     // the same scene without the water, for the frame-time baseline
     osg::ref_ptr<osg::Group> plain = new osg::Group;
@@ -208,5 +212,5 @@ int main(int argc, char** argv)
     osg::ref_ptr<osg::Camera> hud = o.hud ? createHud(water.get(), viewer.getCamera(), o.width, o.height) : nullptr;
     if (hud.valid()) root->addChild(hud.get());
     viewer.setSceneData(root.get());
-    return o.headless ? runHeadless(viewer, scenes.get(), water.get(), hud.get(), o) : runWindowed(viewer, water.get(), o);
+    return o.headless ? runHeadless(viewer, scenes.get(), water.get(), hud.get(), o) : runWindowed(viewer, water.get(), floaters.get(), o);
 }
