@@ -66,6 +66,13 @@ void Harness::frame(double simulationTime)
     _viewer->frame(simulationTime);
 }
 
+osg::Vec2d Harness::pixelOf(const osg::Vec3d& p) const
+{
+    const osg::Camera* cam = _viewer->getCamera();
+    const osg::Vec4d c = osg::Vec4d(p, 1.0) * cam->getViewMatrix() * cam->getProjectionMatrix();
+    return osg::Vec2d((c.x() / c.w() * 0.5 + 0.5) * _w, (c.y() / c.w() * 0.5 + 0.5) * _h);
+}
+
 osg::ref_ptr<osg::Image> readTexture(osg::GraphicsContext* gc, osg::Texture2D* texture)
 {
     gc->makeCurrent();

@@ -24,6 +24,15 @@ osg::ref_ptr<osg::GraphicsContext> createPbuffer(int width, int height, std::str
         }                                                                                            \
     } while (0)
 
+//! Whether a GL context could be made, and why not: what REQUIRE_GL asks of tests that make their
+//! own contexts.
+struct ContextProbe {
+    bool v;
+    std::string w;
+    bool ok() const { return v; }
+    const std::string& why() const { return w; }
+};
+
 class Harness
 {
 public:
@@ -39,6 +48,8 @@ public:
     void setScene(osg::Node* node) { _viewer->setSceneData(node); }
     void lookAt(const osg::Vec3d& eye, const osg::Vec3d& center, double fovy = 45.0);
     void frame(double simulationTime);
+    //! Pixel (column, row from the bottom) where a local point lands in the main view.
+    osg::Vec2d pixelOf(const osg::Vec3d& p) const;
     //! The main camera's float colour target, read back after the last frame.
     osg::ref_ptr<osg::Image> readColor() { return readTexture(_target.get()); }
     //! Any texture on this context as float RGBA (depth textures: depth in every channel).

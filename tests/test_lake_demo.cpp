@@ -78,14 +78,13 @@ bool waterPoint(int x, int y, osg::Vec3d& hit)
 
 }
 
-struct Probe { bool v; std::string w; bool ok() const { return v; } const std::string& why() const { return w; } };
 
 // the demo with `a` and with `b` added to its options (the second switches one effect off)
 #define RUN_DEMO_PAIR(a, b, first, second)                     \
     Shot first, second;                                        \
     {                                                          \
         std::string why;                                       \
-        Probe p{ runDemo(a, first, why), why };                \
+        testing_gl::ContextProbe p{ runDemo(a, first, why), why };                \
         REQUIRE_GL(p);                                         \
         ASSERT_TRUE(runDemo(b, second, why)) << why;           \
     }

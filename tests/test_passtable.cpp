@@ -77,11 +77,13 @@ TEST(PassTable, WithTheWaterOutOfViewOnlyTheSceneRuns)
     FrameFacts f = inView();
     f.waterInView = false;
     EXPECT_EQ(planPasses(f).describe(), "scene");
+    EXPECT_FALSE(planPasses(f).usesViewPasses()) << "no view passes made for the scene alone";
     // nothing sees under the water: the caustics are read by no pass, so they do not run
     EXPECT_FALSE(planPasses(f).runs(PASS_PHOTONS));
     // under water the view sees the underwater scene even with the surface out of view
     f.eyeBelow = true;
     EXPECT_EQ(planPasses(f).describe(), "sun depth, photons, gather, scene, backdrop");
+    EXPECT_TRUE(planPasses(f).usesViewPasses()); // the backdrop reads this view's water inputs
 }
 
 TEST(PassTable, APassNothingReadsDoesNotRun)

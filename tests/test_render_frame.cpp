@@ -21,15 +21,9 @@ osg::Vec3 lambert(const WaterSettings& s, float ndl, float sunShare)
     return s.getAmbientColor() * kMaterialAmbient + s.getSunColor() * (kMaterialDiffuse * ndl * sunShare);
 }
 
-osg::Vec2d pixelOf(Harness& h, const osg::Vec3d& p)
-{
-    const osg::Vec4d c = osg::Vec4d(p, 1.0) * h.camera()->getViewMatrix() * h.camera()->getProjectionMatrix();
-    return osg::Vec2d((c.x() / c.w() * 0.5 + 0.5) * h.width(), (c.y() / c.w() * 0.5 + 0.5) * h.height());
-}
-
 osg::Vec3 colourAt(Harness& h, const osg::Image* img, const osg::Vec3d& p)
 {
-    const osg::Vec2d px = pixelOf(h, p);
+    const osg::Vec2d px = h.pixelOf(p);
     EXPECT_TRUE(px.x() >= 0 && px.y() >= 0 && px.x() < h.width() && px.y() < h.height()) << "point out of view";
     const float* v = pixel(img, std::min(std::max(int(px.x()), 0), h.width() - 1),
                            std::min(std::max(int(px.y()), 0), h.height() - 1));

@@ -59,8 +59,7 @@ TEST(RenderLeaks, WaterNodesViewsAndFramesLeaveTheGLObjectCountConstant)
               frames = envCount("OSGWATER_LEAK_FRAMES", 10000);
     std::string why;
     osg::ref_ptr<osg::GraphicsContext> gc = createPbuffer(32, 32, why);
-    struct Probe { bool ok() const { return v; } const std::string& why() const { return w; } bool v; std::string w; };
-    Probe probe{ gc.valid(), why };
+    ContextProbe probe{ gc.valid(), why };
     REQUIRE_GL(probe);
 
     osg::ref_ptr<osg::Node> bed = checkerPlane(-2.0f, 60.0f, 1.0f);

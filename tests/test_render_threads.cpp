@@ -132,8 +132,7 @@ TEST(RenderThreads, EveryThreadingModelRendersTheSingleThreadedImages)
 {
     std::string why;
     const Images reference = run(osgViewer::ViewerBase::SingleThreaded, why);
-    struct Probe { bool ok() const { return v; } const std::string& why() const { return w; } bool v; std::string w; };
-    Probe probe{ !reference.empty(), why };
+    ContextProbe probe{ !reference.empty(), why };
     REQUIRE_GL(probe);
     ASSERT_EQ(reference.size(), 10u); // the views present at frames 59, 99, 139, 179, 219
     for (const auto& r : reference) {

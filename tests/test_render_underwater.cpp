@@ -34,13 +34,6 @@ Wave wave(float dx, float dy, float wavelength, float amplitude)
     return w;
 }
 
-// pixel (column, row) where a local point lands in the harness's main view
-osg::Vec2d pixelOf(Harness& h, const osg::Vec3d& p)
-{
-    const osg::Vec4d c = osg::Vec4d(p, 1.0) * h.camera()->getViewMatrix() * h.camera()->getProjectionMatrix();
-    return osg::Vec2d((c.x() / c.w() * 0.5 + 0.5) * h.width(), (c.y() / c.w() * 0.5 + 0.5) * h.height());
-}
-
 osg::Vec3 at(const osg::Image* img, const osg::Vec2d& p)
 {
     const float* v = pixel(img, int(p.x()), int(p.y()));
@@ -78,7 +71,7 @@ TEST(RenderUnderwater, ObjectsFadeToTheWaterColourWithDistanceFromTheEye)
 
     const osg::Vec3 W = water->getSettings()->getWaterColor();
     const osg::Vec3d nearP(-0.9, 3, -3), farP(3.6, 12, -3);
-    const osg::Vec3 nearC = at(img.get(), pixelOf(h, nearP)), farC = at(img.get(), pixelOf(h, farP));
+    const osg::Vec3 nearC = at(img.get(), h.pixelOf(nearP)), farC = at(img.get(), h.pixelOf(farP));
     const osg::Vec3 nearE = fog(osg::Vec3(1, 0, 0), W, k, (nearP - eye).length());
     const osg::Vec3 farE = fog(osg::Vec3(1, 0, 0), W, k, (farP - eye).length());
     for (int i = 0; i < 3; ++i) {
@@ -87,7 +80,7 @@ TEST(RenderUnderwater, ObjectsFadeToTheWaterColourWithDistanceFromTheEye)
     }
     EXPECT_LT((farC - W).length(), (nearC - W).length()); // monotonic in distance
     // a ray that meets nothing under water ends in water: the backdrop, not the clear colour
-    const osg::Vec3 nothing = at(img.get(), pixelOf(h, osg::Vec3d(0, 40, -20)));
+    const osg::Vec3 nothing = at(img.get(), h.pixelOf(osg::Vec3d(0, 40, -20)));
     EXPECT_NEAR((nothing - W).length(), 0.0f, 0.01f);
 }
 
@@ -145,7 +138,7 @@ LookUp lookUp(WaterSettings::UnderwaterModel model, bool& ok, std::string& why)
     EXPECT_TRUE(allFinite(img.get()));
     auto ray = [&](double deg) {
         const double t = osg::DegreesToRadians(deg);
-        return at(img.get(), pixelOf(h, eye + osg::Vec3d(0, std::sin(t), std::cos(t))));
+        return at(img.get(), h.pixelOf(eye + osg::Vec3d(0, std::sin(t), std::cos(t))));
     };
     return { ray(60.0), ray(30.0) };
 }

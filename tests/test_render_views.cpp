@@ -33,8 +33,7 @@ TEST(RenderViews, TwoViewsEachGetTheirOwnReflection)
 {
     std::string why;
     osg::ref_ptr<osg::GraphicsContext> gc = createPbuffer(64, 64, why);
-    struct Probe { bool ok() const { return v; } const std::string& why() const { return w; } bool v; std::string w; };
-    Probe probe{ gc.valid(), why };
+    ContextProbe probe{ gc.valid(), why };
     REQUIRE_GL(probe);
 
     osg::ref_ptr<WaterNode> water = new WaterNode;
