@@ -16,20 +16,20 @@ bool glowWanted(const FrameFacts& f) { return f.waterInView && f.glowInView; }
 // The frame, top to bottom. Pre-render rows draw in this order (renderOrder), overlay rows after
 // the scene's bins in this order (renderBin).
 const PassRow kTable[PASS_COUNT] = {
-    // id                   name               stage               reads                        writes                 litScene wanted
-    { PASS_SUN_DEPTH,      "sun depth",       STAGE_PRE_RENDER, 0,                            RES_SUN_DEPTH,         false, sunDepthToRender },
-    { PASS_PHOTONS,        "photons",         STAGE_PRE_RENDER, RES_SUN_DEPTH,                RES_PHOTONS,           false, causticsToRender },
-    { PASS_GATHER,         "gather",          STAGE_PRE_RENDER, RES_PHOTONS,                  RES_CAUSTICS,          false, causticsToRender },
-    { PASS_REFLECTION,     "reflection",      STAGE_PRE_RENDER, 0,                            RES_REFLECTION,        true,  reflectionWanted },
-    { PASS_REFRACTION,     "refraction",      STAGE_PRE_RENDER, 0,                            RES_REFRACTION,        true,  refractionWanted },
-    { PASS_GLOW_HIGHLIGHT, "glow highlight",  STAGE_PRE_RENDER, 0,                            RES_GLOW_HIGHLIGHT,    false, glowWanted },
-    { PASS_GLOW_BLUR_H,    "glow blur x",     STAGE_PRE_RENDER, RES_GLOW_HIGHLIGHT,           RES_GLOW_HALF_BLURRED, false, always },
-    { PASS_GLOW_BLUR_V,    "glow blur y",     STAGE_PRE_RENDER, RES_GLOW_HALF_BLURRED,        RES_GLOW,              false, always },
-    { PASS_SCENE,          "scene",           STAGE_VIEW,       0,                            RES_VIEW_IMAGE,        true,  always },
-    { PASS_SURFACE,        "surface",         STAGE_VIEW,       RES_REFLECTION | RES_REFRACTION, RES_VIEW_IMAGE,     false, waterInView },
-    { PASS_BACKDROP,       "backdrop",        STAGE_OVERLAY,    0,                            RES_VIEW_IMAGE,        false, eyeBelow },
-    { PASS_CAP,            "near-plane cap",  STAGE_OVERLAY,    RES_REFLECTION | RES_REFRACTION, RES_VIEW_IMAGE,     false, waterInView },
-    { PASS_GLOW_COMPOSITE, "glow composite",  STAGE_OVERLAY,    RES_GLOW,                     RES_VIEW_IMAGE,        false, glowWanted },
+    // id                   name               stage               reads                        writes                 litScene perView wanted
+    { PASS_SUN_DEPTH,      "sun depth",       STAGE_PRE_RENDER, 0,                            RES_SUN_DEPTH,         false, false, sunDepthToRender },
+    { PASS_PHOTONS,        "photons",         STAGE_PRE_RENDER, RES_SUN_DEPTH,                RES_PHOTONS,           false, false, causticsToRender },
+    { PASS_GATHER,         "gather",          STAGE_PRE_RENDER, RES_PHOTONS,                  RES_CAUSTICS,          false, false, causticsToRender },
+    { PASS_REFLECTION,     "reflection",      STAGE_PRE_RENDER, 0,                            RES_REFLECTION,        true,  true,  reflectionWanted },
+    { PASS_REFRACTION,     "refraction",      STAGE_PRE_RENDER, 0,                            RES_REFRACTION,        true,  true,  refractionWanted },
+    { PASS_GLOW_HIGHLIGHT, "glow highlight",  STAGE_PRE_RENDER, 0,                            RES_GLOW_HIGHLIGHT,    false, true,  glowWanted },
+    { PASS_GLOW_BLUR_H,    "glow blur x",     STAGE_PRE_RENDER, RES_GLOW_HIGHLIGHT,           RES_GLOW_HALF_BLURRED, false, true,  always },
+    { PASS_GLOW_BLUR_V,    "glow blur y",     STAGE_PRE_RENDER, RES_GLOW_HALF_BLURRED,        RES_GLOW,              false, true,  always },
+    { PASS_SCENE,          "scene",           STAGE_VIEW,       0,                            RES_VIEW_IMAGE,        true,  false, always },
+    { PASS_SURFACE,        "surface",         STAGE_VIEW,       RES_REFLECTION | RES_REFRACTION, RES_VIEW_IMAGE,     false, true,  waterInView },
+    { PASS_BACKDROP,       "backdrop",        STAGE_OVERLAY,    0,                            RES_VIEW_IMAGE,        false, true,  eyeBelow },
+    { PASS_CAP,            "near-plane cap",  STAGE_OVERLAY,    RES_REFLECTION | RES_REFRACTION, RES_VIEW_IMAGE,     false, true,  waterInView },
+    { PASS_GLOW_COMPOSITE, "glow composite",  STAGE_OVERLAY,    RES_GLOW,                     RES_VIEW_IMAGE,        false, true,  glowWanted },
 };
 
 // the first bin after the scene's own (OSG's opaque 0 and transparent 10, and room for a user's)
@@ -62,6 +62,13 @@ PassPlan osgWater::planPasses(const FrameFacts& f)
         if (row.litScene && seesUnderWater && f.caustics) needed |= RES_CAUSTICS | RES_SUN_DEPTH;
     }
     return plan;
+}
+
+bool PassPlan::usesViewPasses() const
+{
+    for (int i = 0; i < PASS_COUNT; ++i)
+        if (runs(PassId(i)) && kTable[i].perView) return true;
+    return false;
 }
 
 std::string PassPlan::describe() const

@@ -186,7 +186,7 @@ void WaterNode::cull(osgUtil::CullVisitor& cv)
     //    water shader's defines follow what runs
     const SceneLighting lighting = sceneLighting(v, plan);
     applySceneLighting(v.lighting, lighting, v.ctx.view);
-    if (needsViewPasses(plan)) {
+    if (plan.usesViewPasses()) {
         v.passes = viewPasses(cv, v);
         if (plan.runs(PASS_GLOW_HIGHLIGHT)) prepareGlow(cv, v);
         v.passes->update(v.ctx, plan, lighting);
@@ -236,13 +236,6 @@ WaterNode::ViewFrame WaterNode::gatherFacts(osgUtil::CullVisitor& cv)
     v.lighting = _views.getLighting(camera);
     prepareCaustics(v);
     return v;
-}
-
-bool WaterNode::needsViewPasses(const PassPlan& plan)
-{
-    // the shared caustics and the view's own scene need no per-view passes
-    const unsigned shared = (1u << PASS_SUN_DEPTH) | (1u << PASS_PHOTONS) | (1u << PASS_GATHER) | (1u << PASS_SCENE);
-    return (plan.bits() & ~shared) != 0;
 }
 
 ViewPasses* WaterNode::viewPasses(osgUtil::CullVisitor& cv, const ViewFrame& v)
