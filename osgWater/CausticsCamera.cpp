@@ -134,6 +134,7 @@ void CausticsCamera::update(const Frame& f)
     const double texel = std::max(r - l, t - b) / getGridSize();
     _lighting.localToSun = view * proj * clipToTexture();
     _lighting.intensity = f.settings->getCausticsIntensity() * _gather->getValueScale();
+    _lighting.channelExtinction = channelExtinction(*f.settings);
     _lighting.depthBias.set(float(1.5 * texel / _window.z()), float(texel / _window.z()));
 
     const osg::Texture::FilterMode filter = f.settings->getCausticsFiltering() ? osg::Texture::LINEAR

@@ -99,9 +99,26 @@ float attenuation(float k, float d)
     return std::exp(-k * d);
 }
 
+glm::vec3 attenuation(const glm::vec3& k, float d)
+{
+    return glm::vec3(attenuation(k.x, d), attenuation(k.y, d), attenuation(k.z, d));
+}
+
 glm::vec3 waterTint(const glm::vec3& refracted, const glm::vec3& water, float a)
 {
     return water + a * (refracted - water);
+}
+
+glm::vec3 waterTint(const glm::vec3& refracted, const glm::vec3& water, const glm::vec3& a)
+{
+    return water + a * (refracted - water);
+}
+
+float deepWaterReflectance(float a, float bb)
+{
+    if (!(a >= 0.0f) || !(bb > 0.0f)) return 0.0f; // nothing scattered back (or NaN)
+    const float u = bb / (a + bb);
+    return 0.0001f + u * (0.3244f + u * (0.1425f + u * 0.1308f));
 }
 
 glm::vec3 fresnelMix(const glm::vec3& refracted, const glm::vec3& reflected, float F)

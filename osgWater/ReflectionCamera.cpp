@@ -28,5 +28,5 @@ void ReflectionCamera::update(const PassContext& ctx)
     setViewMatrix(view);
     setProjectionMatrix(proj);
     // under water a ray that meets nothing ends in water (the fog of eq. 10 comes with the lighting)
-    setClearColor(ctx.eyeBelow && ctx.settings ? osg::Vec4(ctx.settings->getWaterColor(), 1.0f) : ctx.clearColor);
+    setClearColor(ctx.eyeBelow && ctx.settings ? osg::Vec4(ctx.settings->getBodyColor(), 1.0f) : ctx.clearColor);
 }

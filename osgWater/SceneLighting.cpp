@@ -1,6 +1,8 @@
 #include <osgWater/SceneLighting>
 #include <osgWater/PassMath>
 #include <osgWater/PassTable>
+#include <algorithm>
+#include <cmath>
 
 using namespace osgWater;
 
@@ -19,7 +21,8 @@ void osgWater::applySceneLighting(osg::StateSet* ss, const SceneLighting& l, con
     osg::Vec3f sun = osg::Matrixd::transform3x3(l.towardsSun, view);
     sun.normalize();
     setUniform(ss, "osgWater_SunEye", sun);
-    setUniform(ss, "osgWater_Fog", osg::Vec4f(l.fogColor, l.fogAttenuation));
+    setUniform(ss, "osgWater_FogColor", osg::Vec3f(l.fogColor));
+    setUniform(ss, "osgWater_FogExtinction", osg::Vec3f(l.fogExtinction));
     setUniform(ss, "osgWater_WaterPlane", osg::Vec4f(planeToEye(osg::Vec4d(0.0, 0.0, 1.0, -l.level), view)));
 
     if (l.clip) {
@@ -34,6 +37,7 @@ void osgWater::applySceneLighting(osg::StateSet* ss, const SceneLighting& l, con
     setUniform(ss, "osgWater_Caustics", c ? osg::Vec2f(1.0f, c->intensity) : osg::Vec2f(0.0f, 0.0f));
     setUniform(ss, "osgWater_EyeToSun", c ? osg::Matrixf(osg::Matrixd::inverse(view) * c->localToSun) : osg::Matrixf());
     setUniform(ss, "osgWater_SunDepthBias", c ? c->depthBias : osg::Vec2f(0.0f, 0.0f));
+    setUniform(ss, "osgWater_CausticsChannels", c ? c->channelExtinction : osg::Vec3f());
     if (c) {
         ss->setTextureAttribute(UNIT_CAUSTICS, c->caustics.get());
         ss->setTextureAttribute(UNIT_SUN_DEPTH, c->depth.get());
@@ -41,6 +45,19 @@ void osgWater::applySceneLighting(osg::StateSet* ss, const SceneLighting& l, con
         ss->removeTextureAttribute(UNIT_CAUSTICS, osg::StateAttribute::TEXTURE);
         ss->removeTextureAttribute(UNIT_SUN_DEPTH, osg::StateAttribute::TEXTURE);
     }
+}
+
+float osgWater::photonExtinction(const WaterSettings& s) { return s.getSunExtinction().y(); }
+
+osg::Vec3f osgWater::channelExtinction(const WaterSettings& s)
+{
+    const osg::Vec3 K = s.getSunExtinction();
+    const float green = photonExtinction(s);
+    // the sun's path below a level surface: depth / cos of the refracted angle (Snell)
+    const float sinI = std::sqrt(std::max(0.0f, 1.0f - s.getSunDirection().z() * s.getSunDirection().z()));
+    const float sinT = std::min(1.0f, sinI * s.getAirIOR() / s.getWaterIOR());
+    const float cosT = std::max(std::sqrt(1.0f - sinT * sinT), 0.05f);
+    return osg::Vec3f(K.x() - green, K.y() - green, K.z() - green) / cosT;
 }
 
 void osgWater::setDefineIf(osg::StateSet* ss, const char* name, bool on)

@@ -71,7 +71,7 @@ void ViewPasses::update(const PassContext& ctx, const PassPlan& plan, const Scen
         // from above, the water shader attenuates the refracted colour itself; from below, this
         // pass sees the air: no fog either way
         SceneLighting l = lighting;
-        l.fogAttenuation = 0.0f;
+        l.fogExtinction = osg::Vec3();
         if (ctx.eyeBelow) l.caustics = nullptr;
         _refraction->update(ctx);
         _refraction->applyLighting(l);

@@ -256,8 +256,8 @@ SceneLighting WaterNode::sceneLighting(const ViewFrame& v, const PassPlan& plan)
     l.level = v.ctx.level;
     // eq. 10: with the eye under water every object is seen through water
     if (v.ctx.eyeBelow) {
-        l.fogColor = s.getWaterColor();
-        l.fogAttenuation = s.getAttenuation();
+        l.fogColor = s.getBodyColor();
+        l.fogExtinction = s.getViewExtinction();
     }
     // the caustics, when this frame has them on this context (rendered now or by another view)
     if (v.facts.caustics && (plan.runs(PASS_GATHER) || v.facts.causticsDone)) l.caustics = &_caustics->getLighting();

@@ -1,4 +1,6 @@
 #include <osgWater/WaterSettings>
+#include <osgWater/Optics>
+#include <osgWater/WaterTypes>
 #include "Clamp.h"
 #include <osg/Notify>
 #include <osg/Math>
@@ -36,7 +38,8 @@ osg::Vec3 clampColor(const char* name, const osg::Vec3& c, const osg::Vec3& fall
 
 WaterSettings::WaterSettings()
     : _airIOR(1.0f), _waterIOR(1.333f),
-      _waterColor(0.0f, 0.2f, 0.1f), _attenuation(0.5f),
+      _waterColor(0.0f, 0.2f, 0.1f), _attenuation(0.5f), _waterModel(WATER_THESIS),
+      _absorption(defaultAbsorption()), _scattering(defaultScattering()), _backscattering(defaultBackscattering()),
       _fresnelModel(FRESNEL_SCHLICK), _fresnelExponent(5.0f),
       _reflectionScale(1.0f),
       _refractionLookup(ITERATIVE), _searchSteps(3), _searchTolerance(0.01f),
@@ -61,9 +64,15 @@ osg::Vec3 WaterSettings::defaultSunDirection()
     return d;
 }
 
+osg::Vec3 WaterSettings::defaultAbsorption() { return pureWater().absorption; }
+osg::Vec3 WaterSettings::defaultScattering() { return pureWater().scattering; }
+osg::Vec3 WaterSettings::defaultBackscattering() { return pureWater().backscattering; }
+
 WaterSettings::WaterSettings(const WaterSettings& o, const osg::CopyOp& copyop)
     : osg::Object(o, copyop),
       _airIOR(o._airIOR), _waterIOR(o._waterIOR), _waterColor(o._waterColor), _attenuation(o._attenuation),
+      _waterModel(o._waterModel), _absorption(o._absorption), _scattering(o._scattering),
+      _backscattering(o._backscattering),
       _fresnelModel(o._fresnelModel), _fresnelExponent(o._fresnelExponent), _reflectionScale(o._reflectionScale),
       _refractionLookup(o._refractionLookup), _searchSteps(o._searchSteps), _searchTolerance(o._searchTolerance),
       _oneStepScale(o._oneStepScale), _oneStepMaxDepth(o._oneStepMaxDepth),
@@ -95,6 +104,10 @@ E validEnum(const char* name, E v, E last, E fallback)
 }
 }
 
+void WaterSettings::setWaterModel(WaterModel m) { _waterModel = validEnum("waterModel", m, WATER_PER_CHANNEL, WATER_THESIS); touch(); }
+void WaterSettings::setAbsorption(const osg::Vec3& a) { _absorption = clampColor("absorption", a, defaultAbsorption(), 100.0f); touch(); }
+void WaterSettings::setScattering(const osg::Vec3& b) { _scattering = clampColor("scattering", b, defaultScattering(), 100.0f); touch(); }
+void WaterSettings::setBackscattering(const osg::Vec3& bb) { _backscattering = clampColor("backscattering", bb, defaultBackscattering(), 100.0f); touch(); }
 void WaterSettings::setFresnelModel(FresnelModel m) { _fresnelModel = validEnum("fresnelModel", m, FRESNEL_EXACT, FRESNEL_SCHLICK); touch(); }
 void WaterSettings::setRefractionLookup(RefractionLookup l) { _refractionLookup = validEnum("refractionLookup", l, ITERATIVE, ITERATIVE); touch(); }
 void WaterSettings::setUnderwaterModel(UnderwaterModel m) { _underwaterModel = validEnum("underwaterModel", m, UNDERWATER_THESIS, UNDERWATER_PHYSICAL); touch(); }
@@ -148,6 +161,33 @@ void WaterSettings::setSunDirection(const osg::Vec3& d)
     if (std::fabs(n.length() - 1.0) > 1e-6) n.normalize();
     _sunDirection = osg::Vec3(n);
     touch();
+}
+
+osg::Vec3 WaterSettings::getViewExtinction() const
+{
+    if (_waterModel == WATER_THESIS) return osg::Vec3(_attenuation, _attenuation, _attenuation);
+    return _absorption + _scattering;
+}
+
+osg::Vec3 WaterSettings::getSunExtinction() const
+{
+    if (_waterModel == WATER_THESIS) return osg::Vec3(_attenuation, _attenuation, _attenuation);
+    // backscattering beyond the scattering is not light the water can send back: at most b counts
+    osg::Vec3 r;
+    for (int i = 0; i < 3; ++i) r[i] = _absorption[i] + std::min(_backscattering[i], _scattering[i]);
+    return r;
+}
+
+osg::Vec3 WaterSettings::getBodyColor() const
+{
+    if (_waterModel == WATER_THESIS) return _waterColor;
+    // the light falling on the water: the sun on a level surface, and the sky
+    const osg::Vec3 light = _sunColor * std::max(_sunDirection.z(), 0.0f) + _ambientColor;
+    osg::Vec3 r;
+    for (int i = 0; i < 3; ++i)
+        r[i] = std::min(1.0f, light[i] * optics::deepWaterReflectance(_absorption[i],
+                                                                       std::min(_backscattering[i], _scattering[i])));
+    return r;
 }
 
 float WaterSettings::getNormalReflectance() const

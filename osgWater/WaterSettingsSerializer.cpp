@@ -20,6 +20,13 @@ REGISTER_OBJECT_WRAPPER(osgWater_WaterSettings, new osgWater::WaterSettings, osg
     ADD_PRECISE_FLOAT_SERIALIZER(WaterIOR, 1.333f);
     ADD_PRECISE_VEC3F_SERIALIZER(WaterColor, osg::Vec3f(0.0f, 0.2f, 0.1f));
     ADD_PRECISE_FLOAT_SERIALIZER(Attenuation, 0.5f);
+    BEGIN_ENUM_SERIALIZER(WaterModel, WATER_THESIS);
+        ADD_ENUM_VALUE(WATER_THESIS);
+        ADD_ENUM_VALUE(WATER_PER_CHANNEL);
+    END_ENUM_SERIALIZER();
+    ADD_PRECISE_VEC3F_SERIALIZER(Absorption, osgWater::WaterSettings::defaultAbsorption());
+    ADD_PRECISE_VEC3F_SERIALIZER(Scattering, osgWater::WaterSettings::defaultScattering());
+    ADD_PRECISE_VEC3F_SERIALIZER(Backscattering, osgWater::WaterSettings::defaultBackscattering());
     BEGIN_ENUM_SERIALIZER(FresnelModel, FRESNEL_SCHLICK);
         ADD_ENUM_VALUE(FRESNEL_SCHLICK);
         ADD_ENUM_VALUE(FRESNEL_POWER);

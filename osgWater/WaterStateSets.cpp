@@ -60,7 +60,7 @@ WaterStateSets::WaterStateSets()
     osg::ref_ptr<osg::Uniform> phases = new osg::Uniform(osg::Uniform::FLOAT, "osgWater_WavePhases", WaterSurface::MAX_WAVES);
     _water->addUniform(waves.get());
     _water->addUniform(phases.get());
-    const char* floats[] = { "osgWater_Level", "osgWater_Attenuation", "osgWater_FresnelQ", "osgWater_ReflectionScale",
+    const char* floats[] = { "osgWater_Level", "osgWater_PhotonExtinction", "osgWater_FresnelQ", "osgWater_ReflectionScale",
                              "osgWater_UnderwaterScale", "osgWater_SearchTolerance", "osgWater_WaveBound" };
     for (const char* f : floats) _water->addUniform(new osg::Uniform(f, 0.0f));
     _water->addUniform(new osg::Uniform("osgWater_WaveCount", 0));
@@ -68,6 +68,7 @@ WaterStateSets::WaterStateSets()
     _water->addUniform(new osg::Uniform("osgWater_IOR", osg::Vec2f(1.0f, 1.333f)));
     _water->addUniform(new osg::Uniform("osgWater_OneStep", osg::Vec2f(1.0f, 20.0f)));
     _water->addUniform(new osg::Uniform("osgWater_WaterColor", osg::Vec3f()));
+    _water->addUniform(new osg::Uniform("osgWater_Extinction", osg::Vec3f()));
 }
 
 void WaterStateSets::applySettings(const WaterSettings& s, const WaterSurface& surface, DebugOutput debug)
@@ -77,8 +78,9 @@ void WaterStateSets::applySettings(const WaterSettings& s, const WaterSurface& s
 
     osg::StateSet* w = _water.get();
     w->getUniform("osgWater_IOR")->set(osg::Vec2f(s.getAirIOR(), s.getWaterIOR()));
-    w->getUniform("osgWater_WaterColor")->set(s.getWaterColor());
-    w->getUniform("osgWater_Attenuation")->set(s.getAttenuation());
+    w->getUniform("osgWater_WaterColor")->set(s.getBodyColor());
+    w->getUniform("osgWater_Extinction")->set(s.getViewExtinction());
+    w->getUniform("osgWater_PhotonExtinction")->set(photonExtinction(s));
     w->getUniform("osgWater_FresnelQ")->set(s.getFresnelExponent());
     w->getUniform("osgWater_ReflectionScale")->set(s.getReflectionScale());
     w->getUniform("osgWater_UnderwaterScale")->set(s.getUnderwaterLookupScale());

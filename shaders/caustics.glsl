@@ -5,18 +5,22 @@ uniform vec2 osgWater_Caustics;          // (1 if caustics apply in this pass, i
 uniform sampler2D osgWater_CausticsTex;  // unit 4
 uniform sampler2D osgWater_SunDepth;     // unit 5
 uniform vec2 osgWater_SunDepthBias;      // depth bias: constant + per unit of slope tangent
+uniform vec3 osgWater_CausticsChannels;  // per-channel sun extinction beyond the photons', per metre of depth
 
 in vec3 vSun;
 in float vAboveWater;
 
-// Share of the direct sun reaching a fragment (1 above the water or without caustics).
-// Irradiance on a surface of normal n is C (n.L): C counts power per area seen from the sun.
-float owUnderwaterSun(float ndl)
+// Share of the direct sun reaching a fragment per channel (1 above the water or without caustics).
+// Irradiance on a surface of normal n is C (n.L): C counts power per area seen from the sun. The
+// photons faded with the green channel; red and blue differ by their extra extinction over the
+// sun's path down to this depth.
+vec3 owUnderwaterSun(float ndl)
 {
-    if (osgWater_Caustics.x < 0.5 || vAboveWater >= 0.0) return 1.0;
-    if (any(lessThan(vSun.xy, vec2(0.0))) || any(greaterThan(vSun.xy, vec2(1.0)))) return 1.0;
+    if (osgWater_Caustics.x < 0.5 || vAboveWater >= 0.0) return vec3(1.0);
+    if (any(lessThan(vSun.xy, vec2(0.0))) || any(greaterThan(vSun.xy, vec2(1.0)))) return vec3(1.0);
     float tanSlope = sqrt(max(1.0 - ndl * ndl, 0.0)) / max(ndl, 0.1);
     float bias = osgWater_SunDepthBias.x + osgWater_SunDepthBias.y * tanSlope;
-    if (vSun.z > texture(osgWater_SunDepth, vSun.xy).r + bias) return 0.0;
-    return osgWater_Caustics.y * texture(osgWater_CausticsTex, vSun.xy).r;
+    if (vSun.z > texture(osgWater_SunDepth, vSun.xy).r + bias) return vec3(0.0);
+    return osgWater_Caustics.y * texture(osgWater_CausticsTex, vSun.xy).r
+         * exp(osgWater_CausticsChannels * vAboveWater);
 }

@@ -58,6 +58,12 @@ float owAttenuation(float k, float d)
     return d >= 0.0 ? exp(-k * d) : 0.0;
 }
 
+// eq. 4 per channel
+vec3 owAttenuation(vec3 k, float d)
+{
+    return d >= 0.0 ? exp(-k * d) : vec3(0.0);
+}
+
 // eq. 3: the point on U + t R where it meets the line A1 + s Q; false for near-parallel lines
 bool owLineIntersection(vec3 U, vec3 R, vec3 A1, vec3 Q, out vec3 W)
 {

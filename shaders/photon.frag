@@ -3,14 +3,14 @@
 // Caustics pass 2: one photon per fragment. The sun ray through this texel is refracted at the
 // surface, its hit on the bed is found by the same depth-texture search as the refraction
 // (here in the sun's depth map, orthographic rays), and the photon is written as
-// (u, v, energy, 1): u, v its hit in the sun's texture space, energy = (1 - F) exp(-k d) the
+// (u, v, energy, 1): u, v its hit in the sun's texture space, energy = (1 - F) exp(-k d) (k: green) the
 // Fresnel-transmitted, attenuated share of the sun irradiance on this texel (thesis §9.2).
 #define OSGWATER_ORTHO_DEPTH 1
 #pragma include "waves.glsl"
 #pragma include "optics.glsl"
 
 uniform vec2 osgWater_IOR;              // (air, water)
-uniform float osgWater_Attenuation;     // k
+uniform float osgWater_PhotonExtinction; // the green channel's sun extinction (the thesis's k)
 uniform float osgWater_FresnelQ;
 uniform int osgWater_SearchSteps;
 uniform float osgWater_SearchTolerance;
@@ -36,7 +36,7 @@ void main()
     if (dot(T, T) > 0.5 && hit.valid && owRefractionTexCoord(hit.W, tc)) {
         float F = owFresnel(cosL, osgWater_IOR.x, osgWater_IOR.y, osgWater_FresnelQ);
         float d = length(hit.A - vEye);
-        photon = vec4(tc, (1.0 - F) * exp(-osgWater_Attenuation * d), 1.0);
+        photon = vec4(tc, (1.0 - F) * exp(-osgWater_PhotonExtinction * d), 1.0);
     }
     gl_FragColor = photon;
 }

@@ -9,7 +9,8 @@ uniform sampler2D osgWater_BaseTexture; // unit 0; a white texel when the geomet
 uniform vec3 osgWater_SunEye;           // towards the sun, in this pass's eye space
 uniform vec3 osgWater_SunColor;
 uniform vec3 osgWater_Ambient;
-uniform vec4 osgWater_Fog;              // (water colour, k); k = 0: no water between eye and fragment
+uniform vec3 osgWater_FogColor;         // the water's body colour ...
+uniform vec3 osgWater_FogExtinction;    // ... and its extinction per channel; 0: no water between eye and fragment
 
 in vec3 vNormalEye;
 in vec2 vTexCoord;
@@ -22,12 +23,12 @@ void main()
     vec3 n = l2 > 1e-20 ? vNormalEye * inversesqrt(l2) : osgWater_SunEye;
     if (!gl_FrontFacing) n = -n;
     float ndl = max(dot(n, osgWater_SunEye), 0.0);
-    float sun = owUnderwaterSun(ndl);
+    vec3 sun = owUnderwaterSun(ndl);
     vec3 c = gl_FrontMaterial.emission.rgb
            + gl_FrontMaterial.ambient.rgb * osgWater_Ambient
            + gl_FrontMaterial.diffuse.rgb * osgWater_SunColor * (ndl * sun);
     c *= tex.rgb;
-    float a = exp(-osgWater_Fog.a * length(vEyePos)); // eq. 4 with d = |A - C|
-    c = osgWater_Fog.rgb + a * (c - osgWater_Fog.rgb);  // eq. 10
+    vec3 a = exp(-osgWater_FogExtinction * length(vEyePos)); // eq. 4 with d = |A - C|, per channel
+    c = osgWater_FogColor + a * (c - osgWater_FogColor);     // eq. 10
     gl_FragColor = vec4(c, gl_FrontMaterial.diffuse.a * tex.a);
 }

@@ -19,8 +19,8 @@ uniform mat4 osgWater_RefractionView;       // local -> refraction pass eye spac
 uniform mat4 osgWater_RefractionViewInverse;
 
 uniform vec2 osgWater_IOR;                  // (air, water)
-uniform vec3 osgWater_WaterColor;
-uniform float osgWater_Attenuation;         // k
+uniform vec3 osgWater_WaterColor;          // the body colour a long path through water tends to
+uniform vec3 osgWater_Extinction;           // k per channel (the thesis model: the same k thrice)
 uniform float osgWater_FresnelQ;            // q
 uniform float osgWater_ReflectionScale;     // c
 uniform int osgWater_SearchSteps;
@@ -55,7 +55,7 @@ vec3 owRefractedFromAbove(vec3 U, vec3 R, out vec4 debugHit)
         d = length(hit.A - u1);
         debugHit = vec4((osgWater_RefractionViewInverse * vec4(hit.W, 1.0)).xyz, 2.0);
     }
-    return osgWater_WaterColor + owAttenuation(osgWater_Attenuation, d) * (col - osgWater_WaterColor);
+    return osgWater_WaterColor + owAttenuation(osgWater_Extinction, d) * (col - osgWater_WaterColor);
 }
 
 // The refracted colour seen from below (thesis §7.5): what lies along R in the air, then the
@@ -82,7 +82,7 @@ vec3 owRefractedFromBelow(vec3 U, vec3 R, out vec4 debugHit)
         debugHit = vec4(R, 3.0);
     }
 #endif
-    float a = owAttenuation(osgWater_Attenuation, length(osgWater_EyeLocal - U));
+    vec3 a = owAttenuation(osgWater_Extinction, length(osgWater_EyeLocal - U));
     return osgWater_WaterColor + a * (col - osgWater_WaterColor);
 }
 

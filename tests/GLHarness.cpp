@@ -1,4 +1,6 @@
 #include "GLHarness.h"
+#include <osgWater/WaterTypes>
+#include <algorithm>
 #include "../apps/common/FrameTimer.h"
 #include <osg/Material>
 #include <osg/Texture2D>
@@ -107,7 +109,9 @@ osg::ref_ptr<osg::Image> readTexture(osg::GraphicsContext* gc, osg::Texture2D* t
 
 void dumpImage(const osg::Image* img, const std::string& name)
 {
-    // 8-bit copy for looking at failures: OSGWATER_TEST_DUMP=<folder>
+    // 8-bit copy for looking at failures: OSGWATER_TEST_DUMP=<folder>; nothing without it
+    const char* dir = std::getenv("OSGWATER_TEST_DUMP");
+    if (!dir) return;
     static int counter = 0;
     osg::ref_ptr<osg::Image> out = new osg::Image;
     out->allocateImage(img->s(), img->t(), 1, GL_RGBA, GL_UNSIGNED_BYTE);
@@ -115,8 +119,7 @@ void dumpImage(const osg::Image* img, const std::string& name)
         for (int x = 0; x < img->s(); ++x)
             for (int k = 0; k < 4; ++k)
                 out->data(x, y)[k] = (unsigned char)(std::min(std::max(pixel(img, x, y)[k], 0.0f), 1.0f) * 255.0f + 0.5f);
-    const std::string dir = std::getenv("OSGWATER_TEST_DUMP");
-    osgDB::writeImageFile(*out, dir + "/" + std::to_string(counter++) + "_" + name + ".png");
+    osgDB::writeImageFile(*out, std::string(dir) + "/" + std::to_string(counter++) + "_" + name + ".png");
 }
 
 osg::ref_ptr<osg::Image> Harness::readTexture(osg::Texture2D* texture) { return testing_gl::readTexture(_gc.get(), texture); }
@@ -243,6 +246,20 @@ bool allFinite(const osg::Image* img)
     for (size_t i = 0; i < n; ++i)
         if (!std::isfinite(p[i])) return false;
     return true;
+}
+
+::testing::internal::ParamGenerator<std::string> waterModels()
+{
+    std::vector<std::string> names{ "thesis" };
+    for (const osgWater::WaterType& t : osgWater::waterTypes()) names.push_back(t.name);
+    return ::testing::ValuesIn(names);
+}
+
+std::string waterModelTestName(const ::testing::TestParamInfo<std::string>& info)
+{
+    std::string n = info.param; // test names take letters and digits only
+    n.erase(std::remove(n.begin(), n.end(), '-'), n.end());
+    return n;
 }
 
 }

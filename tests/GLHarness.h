@@ -106,4 +106,9 @@ bool allFinite(const osg::Image* img);
 //! Writes an 8-bit PNG of a float image to $OSGWATER_TEST_DUMP (debugging aid).
 void dumpImage(const osg::Image* img, const std::string& name);
 
+//! The water models render tests run under: the thesis's one k and colour, then every preset of
+//! WaterTypes by name. INSTANTIATE_TEST_SUITE_P(Models, Suite, waterModels(), waterModelTestName).
+::testing::internal::ParamGenerator<std::string> waterModels();
+std::string waterModelTestName(const ::testing::TestParamInfo<std::string>& info);
+
 }

@@ -67,6 +67,9 @@ std::vector<FloatSetting> floatSettings()
         COLOR("waterColor", setWaterColor, getWaterColor, 1.0f),
         COLOR("sunColor", setSunColor, getSunColor, 100.0f),
         COLOR("ambientColor", setAmbientColor, getAmbientColor, 100.0f),
+        COLOR("absorption", setAbsorption, getAbsorption, 100.0f),
+        COLOR("scattering", setScattering, getScattering, 100.0f),
+        COLOR("backscattering", setBackscattering, getBackscattering, 100.0f),
         FloatSetting{ "sunDirection",
                       [](WaterSettings& s, WaterSurface&, float v) { s.setSunDirection(osg::Vec3(v, v, v)); },
                       [](const WaterSettings& s, const WaterSurface&) { return s.getSunDirection().length(); },
@@ -182,6 +185,7 @@ TEST(BadValues, EnumsThatNameNoModelFallBackToTheDefaultWithOneWarning)
         { "fresnelModel", [](WaterSettings& s, int v) { s.setFresnelModel(WaterSettings::FresnelModel(v)); return int(s.getFresnelModel()); }, 2, 0 },
         { "refractionLookup", [](WaterSettings& s, int v) { s.setRefractionLookup(WaterSettings::RefractionLookup(v)); return int(s.getRefractionLookup()); }, 1, 1 },
         { "underwaterModel", [](WaterSettings& s, int v) { s.setUnderwaterModel(WaterSettings::UnderwaterModel(v)); return int(s.getUnderwaterModel()); }, 1, 0 },
+        { "waterModel", [](WaterSettings& s, int v) { s.setWaterModel(WaterSettings::WaterModel(v)); return int(s.getWaterModel()); }, 1, 0 },
         { "causticsGather", [](WaterSettings& s, int v) { s.setCausticsGather(WaterSettings::CausticsGather(v)); return int(s.getCausticsGather()); }, 3, 0 },
     };
     for (const EnumSetting& e : enums)

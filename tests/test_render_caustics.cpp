@@ -5,6 +5,7 @@
 #include "GLHarness.h"
 #include <osgWater/WaterNode>
 #include <osgWater/Optics>
+#include <osgWater/WaterTypes>
 #include <osg/Geometry>
 #include <osg/Material>
 #include <osgWater/PassMath>
@@ -116,13 +117,14 @@ osg::Geode* litQuad(float x0, float y0, float x1, float y1, float z)
 
 double value(const osg::Image* img, int i, int j) { return pixel(img, i, j)[0]; }
 
-// Transmitted, attenuated irradiance under flat water of depth H, sun at cosine cosL (Schlick, q 5).
-double flatIrradiance(double cosL, double H)
+// Transmitted, attenuated irradiance under flat water of depth H, sun at cosine cosL (Schlick, q 5),
+// extinction k per metre of the sun's path.
+double flatIrradiance(double cosL, double H, double k = kK)
 {
     const float f = optics::normalReflectance(1.0f, 1.333f);
     const double F = optics::fresnelSchlick(float(cosL), f, 5.0f);
     const double eta = 1.0 / 1.333, cosT = std::sqrt(1.0 - eta * eta * (1.0 - cosL * cosL));
-    return (1.0 - F) * std::exp(-kK * H / cosT);
+    return (1.0 - F) * std::exp(-k * H / cosT);
 }
 
 }
@@ -307,6 +309,34 @@ TEST(RenderCaustics, TheBedIsLitByTheCausticsAndShadowedByUnderwaterObjects)
     s->setCausticsEnabled(false);
     EXPECT_NEAR(bedColour(osg::Vec3d(-3, 0, -2)), ndl, 0.01);
     EXPECT_NEAR(bedColour(osg::Vec3d(1.8, 0, -2)), ndl, 0.01);
+}
+
+TEST(RenderCaustics, UnderAPerChannelWaterEachChannelOfTheSunFadesByItsOwnExtinction)
+{
+    // the photons carry one energy; the bed's red and blue must still fade by their own sun
+    // extinction K = a + b_b over the refracted path (clear lake: red far faster than green)
+    const osg::Vec3 sun(0.5f, 0.0f, 0.8660254f);
+    CausticsScene sc(20.0f, 64, 128, sun, -3.0f);
+    REQUIRE_GL(sc.h);
+    sc.water->removeChildren(0, sc.water->getNumChildren());
+    sc.water->addChild(litQuad(-10, -10, 10, 10, -3.0f));
+    WaterSettings* s = sc.water->getSettings();
+    applyWaterType(*s, *findWaterType("clear-lake"));
+    s->setRefractionEnabled(true);
+    s->setAmbientColor(osg::Vec3(0, 0, 0));
+    s->setSunColor(osg::Vec3(1, 1, 1));
+    sc.h.frame(1.0);
+    RefractionCamera* rc = sc.water->getViewPasses(sc.h.camera())->getRefractionCamera();
+    osg::ref_ptr<osg::Image> img = sc.h.readTexture(rc->getColorTexture());
+    const osg::Vec3d t = projectToTexture(osg::Vec3d(-3, 0, -3), rc->getViewMatrix(), rc->getProjectionMatrix());
+    const float* c = pixel(img.get(), int(t.x() * img->s()), int(t.y() * img->t()));
+    const WaterOptics& o = findWaterType("clear-lake")->optics;
+    const double ndl = sun.z();
+    for (int i = 0; i < 3; ++i) {
+        const double K = o.absorption[i] + o.backscattering[i];
+        EXPECT_NEAR(c[i], ndl * flatIrradiance(ndl, 3.0, K), 0.01) << "channel " << i;
+    }
+    EXPECT_LT(c[0], 0.5 * c[1]) << "red fades first";
 }
 
 TEST(RenderCaustics, SunDepthMapIsRedrawnOnlyWhenTheSunMoves)

@@ -3,6 +3,8 @@
 #include "GLHarness.h"
 #include <osgWater/WaterNode>
 #include <osgWater/Optics>
+#include <osgWater/WaterTypes>
+#include <algorithm>
 #include <cmath>
 
 using namespace testing_gl;
@@ -95,13 +97,18 @@ TEST(RenderReflection, RedQuadAppearsMirroredWhereGeometryPredicts)
     EXPECT_NEAR(sky[2], 0.8f, 0.02f);
 }
 
-TEST(RenderReflection, ShadedColourMatchesTheOpticsMirror)
+// The water models: the thesis's one k and colour, and each per-channel preset.
+class RenderWaterModel : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(RenderWaterModel, ShadedColourMatchesTheOpticsMirror)
 {
     // flat water over a uniform grey bed: every water pixel is eq. 9 of eq. 5 of the bed and the
-    // reflected sky, with Fresnel eq. 7-8 and attenuation eq. 4 along the exact refracted path
+    // reflected sky, with Fresnel eq. 7-8 and attenuation eq. 4 along the exact refracted path,
+    // per channel with the model's extinction and body colour
     Harness h(160, 120);
     REQUIRE_GL(h);
     osg::ref_ptr<WaterNode> water = flatWater();
+    if (const WaterType* type = findWaterType(GetParam())) applyWaterType(*water->getSettings(), *type);
     const float depth = 1.5f;
     water->addChild(emissiveQuad(osg::Vec3(-100, -100, -depth), osg::Vec3(100, -100, -depth),
                                  osg::Vec3(100, 100, -depth), osg::Vec3(-100, 100, -depth), osg::Vec4(0.6f, 0.5f, 0.4f, 1)));
@@ -115,7 +122,8 @@ TEST(RenderReflection, ShadedColourMatchesTheOpticsMirror)
     const WaterSettings* s = water->getSettings();
     const osg::Matrixd inv = osg::Matrixd::inverse(h.camera()->getViewMatrix() * h.camera()->getProjectionMatrix());
     const glm::vec3 sky(0.2f, 0.3f, 0.8f), bed(0.6f, 0.5f, 0.4f);
-    const glm::vec3 wc(s->getWaterColor().x(), s->getWaterColor().y(), s->getWaterColor().z());
+    const glm::vec3 wc(s->getBodyColor().x(), s->getBodyColor().y(), s->getBodyColor().z());
+    const glm::vec3 extinction(s->getViewExtinction().x(), s->getViewExtinction().y(), s->getViewExtinction().z());
     int checked = 0;
     double worst = 0.0;
     for (int y = 2; y < h.height(); y += 7)
@@ -130,7 +138,7 @@ TEST(RenderReflection, ShadedColourMatchesTheOpticsMirror)
             glm::vec3 X;
             ASSERT_TRUE(optics::intersectPlaneZ(glm::vec3(U.x(), U.y(), U.z()), R, -depth, X));
             const float dist = glm::length(X - glm::vec3(U.x(), U.y(), U.z()));
-            const glm::vec3 refr = optics::waterTint(bed, wc, optics::attenuation(s->getAttenuation(), dist));
+            const glm::vec3 refr = optics::waterTint(bed, wc, optics::attenuation(extinction, dist));
             const float F = optics::fresnelSchlick(-I.z, s->getNormalReflectance(), s->getFresnelExponent());
             const glm::vec3 expect = optics::fresnelMix(refr, sky, F);
             const float* c = pixel(img.get(), x, y);
@@ -140,3 +148,5 @@ TEST(RenderReflection, ShadedColourMatchesTheOpticsMirror)
     EXPECT_GT(checked, 100);
     EXPECT_LT(worst, 0.01) << "8-bit pass textures: tolerance 0.01";
 }
+
+INSTANTIATE_TEST_SUITE_P(Models, RenderWaterModel, waterModels(), waterModelTestName);

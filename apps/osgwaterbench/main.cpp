@@ -10,6 +10,7 @@
 #include "Views.h"
 #include "../common/FrameTimer.h"
 #include "../common/SceneWater.h"
+#include <osgWater/SceneLighting>
 #include <osgDB/FileUtils>
 #include <osgDB/ReadFile>
 #include <osg/GL>
@@ -258,7 +259,7 @@ int main(int argc, char** argv)
                     PhotonSettings ps;
                     ps.photons = o.photons;
                     ps.resolution = cc->getResolution();
-                    ps.attenuation = base->getAttenuation();
+                    ps.attenuation = osgWater::photonExtinction(*base); // what the photon pass fades by
                     ps.media = media;
                     ps.progress = !o.quick;
                     std::cout << "caustics reference at t = " << v.t << " s:" << std::endl;

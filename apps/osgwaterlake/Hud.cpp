@@ -14,7 +14,10 @@ std::string describeSettings(const WaterSettings& s)
                                                                  : "iterative/" + std::to_string(s.getSearchSteps()))
       << (s.getRefractionCameraRotation() ? " rotated" : "") << ", reflection " << (s.getReflectionEnabled() ? "on" : "off")
       << ", fresnel " << (s.getFresnelModel() == WaterSettings::FRESNEL_EXACT ? "exact" : s.getFresnelModel() == WaterSettings::FRESNEL_POWER ? "power" : "schlick")
-      << ", k " << s.getAttenuation() << ", tex " << s.getReflectionTextureSize()
+      << ", water ";
+    if (s.getWaterModel() == WaterSettings::WATER_PER_CHANNEL) o << "per-channel";
+    else o << "k " << s.getAttenuation();
+    o << ", tex " << s.getReflectionTextureSize()
       << ", glow " << (s.getGlowEnabled() ? "on" : "off")
       << ", underwater " << (s.getUnderwaterModel() == WaterSettings::UNDERWATER_THESIS ? "thesis" : "physical");
     return o.str();

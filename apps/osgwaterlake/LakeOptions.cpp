@@ -1,4 +1,5 @@
 #include "LakeOptions.h"
+#include <osgWater/WaterTypes>
 #include <osgDB/FileUtils>
 #include <osgDB/FileNameUtils>
 #include <iostream>
@@ -24,9 +25,10 @@ void LakeOptions::describe(osg::ApplicationUsage& u)
     u.addCommandLineOption("--steps <n>", "Candidates of the iterative search (1-8)");
     u.addCommandLineOption("--fresnel <schlick|power|exact>", "Fresnel model");
     u.addCommandLineOption("--q <q>", "Fresnel exponent");
-    u.addCommandLineOption("--k <k>", "Attenuation per metre");
+    u.addCommandLineOption("--water-type <name>", "The water: " + osgWater::waterTypeNames() + " (per-channel absorption and scattering; default clear-lake), or thesis (one k, one colour)");
+    u.addCommandLineOption("--k <k>", "Attenuation per metre (thesis model)");
     u.addCommandLineOption("--c <c>", "Reflection lookup scale");
-    u.addCommandLineOption("--water-color <r> <g> <b>", "Water colour");
+    u.addCommandLineOption("--water-color <r> <g> <b>", "Water colour (thesis model)");
     u.addCommandLineOption("--fov-ext <near> <far> <falloff>", "Pass FOV extension near/far the water, e-folding height");
     u.addCommandLineOption("--texture-size <n>", "Reflection and refraction texture size");
     u.addCommandLineOption("--no-reflection", "Switch reflection off");
@@ -82,6 +84,12 @@ bool LakeOptions::read(osg::ArgumentParser& args)
         });
     }
     if (args.read("--q", f)) _setters.push_back([f](WaterSettings& w) { w.setFresnelExponent(f); });
+    if (args.read("--water-type", s)) waterType = s;
+    if (waterType != "thesis" && !osgWater::findWaterType(waterType)) {
+        std::cerr << "error: --water-type " << waterType << ": not one of " << osgWater::waterTypeNames() << ", thesis"
+                  << std::endl;
+        return false;
+    }
     if (args.read("--k", f)) _setters.push_back([f](WaterSettings& w) { w.setAttenuation(f); });
     if (args.read("--c", f)) _setters.push_back([f](WaterSettings& w) { w.setReflectionScale(f); });
     if (args.read("--water-color", f, g, h)) _setters.push_back([f, g, h](WaterSettings& w) { w.setWaterColor(osg::Vec3(f, g, h)); });
@@ -120,7 +128,10 @@ bool LakeOptions::read(osg::ArgumentParser& args)
 
 void LakeOptions::apply(osgWater::WaterNode& water) const
 {
-    for (const auto& set : _setters) set(*water.getSettings());
+    WaterSettings& s = *water.getSettings();
+    if (const osgWater::WaterType* type = osgWater::findWaterType(waterType)) osgWater::applyWaterType(s, *type);
+    else s.setWaterModel(WaterSettings::WATER_THESIS);
+    for (const auto& set : _setters) set(s);
 }
 
 std::string findSceneFile(const std::string& name)
