@@ -29,14 +29,24 @@ osg::Matrixd withNearFar(const osg::Matrixd& projection, double zNear, double zF
     return projection;
 }
 
+double localLengthPerEyeLength(const osg::Matrixd& view)
+{
+    // the cube root of the volume scale: exact for a uniform scale, a fair mean otherwise
+    const osg::Vec3d x(view(0, 0), view(0, 1), view(0, 2)), y(view(1, 0), view(1, 1), view(1, 2)),
+        z(view(2, 0), view(2, 1), view(2, 2));
+    const double volume = std::fabs((x ^ y) * z);
+    return volume > 0.0 && std::isfinite(volume) ? 1.0 / std::cbrt(volume) : 1.0;
+}
+
 bool nearFarForBound(const osg::Matrixd& view, const osg::BoundingSphere& bound, double& zNear, double& zFar)
 {
     if (!bound.valid()) return false;
     const double depth = -(osg::Vec3d(bound.center()) * view).z(); // distance along -Z
-    zFar = depth + bound.radius();
+    const double radius = bound.radius() / localLengthPerEyeLength(view); // in eye-space units
+    zFar = depth + radius;
     if (zFar <= 0.0) return false;
     // 1e-4 of far keeps a 24-bit depth buffer meaningful when the eye is inside the bound
-    zNear = std::max(depth - bound.radius(), zFar * 1.0e-4);
+    zNear = std::max(depth - radius, zFar * 1.0e-4);
     zFar *= 1.001;
     return true;
 }

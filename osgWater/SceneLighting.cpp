@@ -23,6 +23,7 @@ void osgWater::applySceneLighting(osg::StateSet* ss, const SceneLighting& l, con
     setUniform(ss, "osgWater_SunEye", sun);
     setUniform(ss, "osgWater_FogColor", osg::Vec3f(l.fogColor));
     setUniform(ss, "osgWater_FogExtinction", osg::Vec3f(l.fogExtinction));
+    setUniform(ss, "osgWater_EyeUnit", float(localLengthPerEyeLength(view)));
     setUniform(ss, "osgWater_WaterPlane", osg::Vec4f(planeToEye(osg::Vec4d(0.0, 0.0, 1.0, -l.level), view)));
 
     if (l.clip) {

@@ -197,6 +197,20 @@ void WaterNode::cull(osgUtil::CullVisitor& cv)
         if (plan.runs(PassId(i))) cullPass(PassId(i), cv, v);
 }
 
+void WaterNode::warnIfScaledUnevenly(const osg::Matrixd& view)
+{
+    // the view's rotation keeps lengths: the local axes' lengths in eye space are the scales
+    double lo = 1e300, hi = 0.0;
+    for (int i = 0; i < 3; ++i) {
+        const double l = osg::Vec3d(view(i, 0), view(i, 1), view(i, 2)).length();
+        lo = std::min(lo, l);
+        hi = std::max(hi, l);
+    }
+    if (hi <= lo * 1.001 || _warnedUnevenScale.exchange(true)) return;
+    OSG_WARN << "osgWater: WaterNode \"" << getName() << "\" is under a non-uniform scale (" << lo << " to " << hi
+             << "): light fades over distances in its local frame, and the sun's direction is bent" << std::endl;
+}
+
 WaterNode::ViewFrame WaterNode::gatherFacts(osgUtil::CullVisitor& cv)
 {
     const WaterSettings& s = *_settings;
@@ -216,6 +230,7 @@ WaterNode::ViewFrame WaterNode::gatherFacts(osgUtil::CullVisitor& cv)
     ctx.clearance = _surface->getMaxAmplitude() + s.getClipOffset();
     ctx.clearColor = camera->getClearColor();
     ctx.settings = &s;
+    warnIfScaledUnevenly(ctx.view);
     const osg::Vec3d eye = eyePosition(ctx.view);
     const double eyeHeight = eyeHeightAboveSurface(eye, t);
     ctx.eyeBelow = eyeHeight < 0.0;

@@ -11,6 +11,7 @@ uniform vec3 osgWater_SunColor;
 uniform vec3 osgWater_Ambient;
 uniform vec3 osgWater_FogColor;         // the water's body colour ...
 uniform vec3 osgWater_FogExtinction;    // ... and its extinction per channel; 0: no water between eye and fragment
+uniform float osgWater_EyeUnit;         // local metres per eye-space unit (1 unless the water is scaled)
 
 in vec3 vNormalEye;
 in vec2 vTexCoord;
@@ -28,7 +29,7 @@ void main()
            + gl_FrontMaterial.ambient.rgb * osgWater_Ambient
            + gl_FrontMaterial.diffuse.rgb * osgWater_SunColor * (ndl * sun);
     c *= tex.rgb;
-    vec3 a = exp(-osgWater_FogExtinction * length(vEyePos)); // eq. 4 with d = |A - C|, per channel
+    vec3 a = exp(-osgWater_FogExtinction * (length(vEyePos) * osgWater_EyeUnit)); // eq. 4 with d = |A - C|, per channel
     c = osgWater_FogColor + a * (c - osgWater_FogColor);     // eq. 10
     gl_FragColor = vec4(c, gl_FrontMaterial.diffuse.a * tex.a);
 }

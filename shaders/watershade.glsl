@@ -40,7 +40,7 @@ vec3 owRefractedFromAbove(vec3 U, vec3 R, out vec4 debugHit)
 {
     debugHit = vec4(0.0, 0.0, 0.0, -1.0);
     vec3 u1 = (osgWater_RefractionView * vec4(U, 1.0)).xyz;
-    vec3 R1 = mat3(osgWater_RefractionView) * R;
+    vec3 R1 = normalize(mat3(osgWater_RefractionView) * R); // unit in that eye space, scaled or not
 #ifdef OSGWATER_ONE_STEP
     owBottomHit hit = owOneStepSearch(u1, R1, osgWater_OneStep.x, osgWater_OneStep.y);
 #else
@@ -52,7 +52,7 @@ vec3 owRefractedFromAbove(vec3 U, vec3 R, out vec4 debugHit)
         vec2 tc;
         owRefractionTexCoord(hit.W, tc);
         col = texture(osgWater_RefractionTex, tc).rgb;
-        d = length(hit.A - u1);
+        d = length(mat3(osgWater_RefractionViewInverse) * (hit.A - u1)); // local metres
         debugHit = vec4((osgWater_RefractionViewInverse * vec4(hit.W, 1.0)).xyz, 2.0);
     }
     return osgWater_WaterColor + owAttenuation(osgWater_Extinction, d) * (col - osgWater_WaterColor);
@@ -70,7 +70,7 @@ vec3 owRefractedFromBelow(vec3 U, vec3 R, out vec4 debugHit)
 #else
     // the same search as from above, in the air; nothing found along R: the sky in R's direction
     vec3 u1 = (osgWater_RefractionView * vec4(U, 1.0)).xyz;
-    owBottomHit hit = owIterativeSearch(u1, mat3(osgWater_RefractionView) * R, osgWater_SearchSteps,
+    owBottomHit hit = owIterativeSearch(u1, normalize(mat3(osgWater_RefractionView) * R), osgWater_SearchSteps,
                                         osgWater_SearchTolerance);
     vec3 col;
     vec2 tc;
