@@ -6,8 +6,8 @@
 
 using namespace osgWater;
 
-#ifndef GL_TIME_ELAPSED
-#define GL_TIME_ELAPSED 0x88BF
+#ifndef GL_TIMESTAMP
+#define GL_TIMESTAMP 0x8E28
 #endif
 #ifndef GL_QUERY_RESULT_AVAILABLE
 #define GL_QUERY_RESULT_AVAILABLE 0x8867
@@ -54,22 +54,23 @@ void GpuTimer::begin(osg::RenderInfo& ri)
     Query& q = _queries[ri.getContextID()];
     if (q.failed) return;
     osg::GLExtensions* ext = ri.getState()->get<osg::GLExtensions>();
-    if (!ext || !ext->isTimerQuerySupported || !ext->glGenQueries) {
+    if (!ext || !ext->isTimerQuerySupported || !ext->glGenQueries || !ext->glQueryCounter) {
         OSG_NOTICE << "osgWater::GpuTimer: no GL timer queries here, pass times are not measured" << std::endl;
         q.failed = true;
         return;
     }
-    if (q.id == 0) ext->glGenQueries(1, &q.id);
+    if (q.ids[0] == 0) ext->glGenQueries(2, q.ids);
     if (q.pending) {
         GLint available = 0;
-        ext->glGetQueryObjectiv(q.id, GL_QUERY_RESULT_AVAILABLE, &available);
+        ext->glGetQueryObjectiv(q.ids[1], GL_QUERY_RESULT_AVAILABLE, &available);
         if (!available) return; // last frame's result not there yet: skip this frame's measurement
-        GLuint64 ns = 0;
-        ext->glGetQueryObjectui64v(q.id, GL_QUERY_RESULT, &ns);
-        _ms = double(ns) * 1.0e-6;
+        GLuint64 start = 0, stop = 0;
+        ext->glGetQueryObjectui64v(q.ids[0], GL_QUERY_RESULT, &start);
+        ext->glGetQueryObjectui64v(q.ids[1], GL_QUERY_RESULT, &stop);
+        _ms = stop > start ? double(stop - start) * 1.0e-6 : 0.0;
         q.pending = false;
     }
-    ext->glBeginQuery(GL_TIME_ELAPSED, q.id);
+    ext->glQueryCounter(q.ids[0], GL_TIMESTAMP);
     q.active = true;
 }
 
@@ -78,7 +79,7 @@ void GpuTimer::end(osg::RenderInfo& ri)
     Query& q = _queries[ri.getContextID()];
     if (!q.active) return;
     osg::GLExtensions* ext = ri.getState()->get<osg::GLExtensions>();
-    ext->glEndQuery(GL_TIME_ELAPSED);
+    ext->glQueryCounter(q.ids[1], GL_TIMESTAMP);
     q.active = false;
     q.pending = true;
 }
