@@ -1,7 +1,13 @@
 #include <osgWater/PassCamera>
+#include <osg/ValueObject>
 #include <osgWater/PassMath>
 
 using namespace osgWater;
+
+namespace {
+const char* const kWaterPassKey = "osgWater.pass"; // user value: the PassId of a water's pass camera
+}
+
 
 PassCamera::PassCamera(osg::Group* scene, std::initializer_list<osg::StateSet*> sceneStates, int width, int height,
                        PassId pass)
@@ -53,6 +59,13 @@ void osgWater::setUpPassTarget(osg::Camera* camera, int width, int height, PassI
     camera->setComputeNearFarMode(osg::CullSettings::DO_NOT_COMPUTE_NEAR_FAR);
     camera->setClearMask(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     camera->setViewport(0, 0, width, height);
+    camera->setUserValue(kWaterPassKey, int(pass));
+}
+
+bool osgWater::isWaterPass(const osg::Camera* camera)
+{
+    int pass;
+    return camera && camera->getUserValue(kWaterPassKey, pass);
 }
 
 void PassCamera::setKeepPlane(const osg::Plane& localPlane)

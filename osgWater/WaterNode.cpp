@@ -171,6 +171,10 @@ void WaterNode::cull(osgUtil::CullVisitor& cv)
         osg::Group::traverse(cv);
         return;
     }
+    if (isWaterPass(cv.getCurrentCamera())) { // inside another water's pass: a guest, no passes
+        cullAsGuest(cv);
+        return;
+    }
     // 1. the frame's facts: where the eye is, whether the water is in view, what the context
     //    can do, the shared caustics
     ViewFrame v = gatherFacts(cv);
@@ -209,6 +213,18 @@ void WaterNode::warnIfScaledUnevenly(const osg::Matrixd& view)
     if (hi <= lo * 1.001 || _warnedUnevenScale.exchange(true)) return;
     OSG_WARN << "osgWater: WaterNode \"" << getName() << "\" is under a non-uniform scale (" << lo << " to " << hi
              << "): light fades over distances in its local frame, and the sun's direction is bent" << std::endl;
+}
+
+void WaterNode::cullAsGuest(osgUtil::CullVisitor& cv)
+{
+    // the host pass's camera carries its lighting (clip plane, sun, fog); this water's scene and
+    // its surface under the guest program go beneath it
+    {
+        ScopedStateSets states(cv, { _states.getSceneStateSet() });
+        osg::Group::traverse(cv);
+    }
+    ScopedStateSets states(cv, { _states.getSceneStateSet(), _states.getWaterStateSet(), _states.getGuestStateSet() });
+    _surface->accept(cv);
 }
 
 WaterNode::ViewFrame WaterNode::gatherFacts(osgUtil::CullVisitor& cv)

@@ -69,6 +69,10 @@ WaterStateSets::WaterStateSets()
     _water->addUniform(new osg::Uniform("osgWater_OneStep", osg::Vec2f(1.0f, 20.0f)));
     _water->addUniform(new osg::Uniform("osgWater_WaterColor", osg::Vec3f()));
     _water->addUniform(new osg::Uniform("osgWater_Extinction", osg::Vec3f()));
+
+    _guest = new osg::StateSet;
+    _guest->setName("osgWater.guest");
+    _guest->setAttribute(createProgram("osgWater.guest", "guest.vert", "guest.frag"));
 }
 
 void WaterStateSets::applySettings(const WaterSettings& s, const WaterSurface& surface, DebugOutput debug)
@@ -124,10 +128,12 @@ void WaterStateSets::resizeGLObjectBuffers(unsigned int maxSize)
 {
     _scene->resizeGLObjectBuffers(maxSize);
     _water->resizeGLObjectBuffers(maxSize);
+    _guest->resizeGLObjectBuffers(maxSize);
 }
 
 void WaterStateSets::releaseGLObjects(osg::State* state) const
 {
     _scene->releaseGLObjects(state);
     _water->releaseGLObjects(state);
+    _guest->releaseGLObjects(state);
 }

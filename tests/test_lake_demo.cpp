@@ -3,6 +3,7 @@
 // water and not through deep water. Each effect is switched off once to show the check depends on it.
 #include "GLHarness.h"
 #include "../apps/common/Floaters.h"
+#include "../apps/common/Pond.h"
 #include "../apps/common/SceneWater.h"
 #include <unistd.h>
 #include "../apps/osgwatergenlake/LakeModel.h"
@@ -235,3 +236,46 @@ TEST(LakeDemo, TheBuoyAndTheBoatRideTheWaves)
     EXPECT_GT(rise, 0.005) << "the floaters should move with the waves";
     EXPECT_TRUE(testing_gl::allFinite(h.readColor().get()));
 }
+
+TEST(LakeDemo, ThePondAboveTheLakeIsWaterWithPassesOfItsOwn)
+{
+    // the demo's pond (--pond) seen across the lake: where its surface is, the image shows water
+    // (sky reflected over the dark murky body: blue the largest channel, unlike grass and stone)
+    // and not what is there without it; it renders passes for the view and none inside the lake's
+    testing_gl::Harness h(400, 250);
+    REQUIRE_GL(h);
+    osg::ref_ptr<osg::Node> lake = osgDB::readRefNodeFile(OSGWATER_LAKE_SCENE);
+    ASSERT_TRUE(lake.valid());
+    osg::ref_ptr<osgWater::WaterNode> water = osgWaterApps::findOrAddWater(lake, OSGWATER_LAKE_SCENE);
+    osg::ref_ptr<osgWater::WaterNode> pond;
+    osg::ref_ptr<osg::Switch> sw = osgWaterApps::addPond(water.get(), osgWaterApps::kLakePond, false, &pond);
+    ASSERT_TRUE(pond.valid());
+    const double level = pond->getSurface()->getLevel();
+    EXPECT_NEAR(level - lake::height(float(osgWaterApps::kLakePond.x()), float(osgWaterApps::kLakePond.y())),
+                osgWaterApps::kPondWaterAboveGround, 0.05) << "built on the rim's ground";
+    h.setScene(lake.get());
+    h.lookAt(osgWaterApps::kPondViewEye, osgWaterApps::kPondViewCenter);
+    h.frame(10.0);
+    osg::ref_ptr<osg::Image> without = h.readColor();
+    sw->setAllChildrenOn();
+    h.frame(10.0);
+    osg::ref_ptr<osg::Image> with = h.readColor();
+
+    ASSERT_NE(pond->getViewPasses(h.camera()), nullptr);
+    osgWater::ViewPasses* lakePasses = water->getViewPasses(h.camera());
+    ASSERT_NE(lakePasses, nullptr);
+    EXPECT_EQ(pond->getViewPasses(lakePasses->getReflectionCamera()), nullptr) << "no passes inside the lake's";
+    int water_ = 0, checked = 0;
+    for (double dx : { -1.2, 0.0, 1.2 })
+        for (double dy : { 0.0, 0.8, 1.5 }) { // the far part: the near wall hides the near one
+            const osg::Vec2d px = h.pixelOf(osg::Vec3d(osgWaterApps::kLakePond.x() + dx, osgWaterApps::kLakePond.y() + dy, level));
+            const float* c = testing_gl::pixel(with.get(), int(px.x()), int(px.y()));
+            const float* o = testing_gl::pixel(without.get(), int(px.x()), int(px.y()));
+            ++checked;
+            const bool blue = c[2] > c[1] && c[2] > c[0];
+            const bool changed = std::fabs(c[0] - o[0]) + std::fabs(c[1] - o[1]) + std::fabs(c[2] - o[2]) > 0.1f;
+            if (blue && changed) ++water_;
+        }
+    EXPECT_EQ(water_, checked) << "pond surface pixels that show water";
+}
+

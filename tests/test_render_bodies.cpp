@@ -1,8 +1,11 @@
-// Water where applications put it: under a MatrixTransform (moved, turned about z, scaled),
-// checked against the same water untransformed.
+// Water where applications put it: under a MatrixTransform (moved, turned about z, scaled) and
+// several bodies at different levels, each rendering its own passes and appearing in the other's
+// as a guest without recursion. Checked against the same water untransformed and the Optics mirror.
 #include "GLHarness.h"
 #include "WarnCapture.h"
 #include <osgWater/WaterNode>
+#include <osgWater/Optics>
+#include <osgWater/PassMath>
 #include <osg/MatrixTransform>
 #include <algorithm>
 #include <cmath>
@@ -106,4 +109,110 @@ TEST(RenderBodies, ANonUniformScaleIsWarnedAboutOnce)
     const size_t first = text.find("non-uniform scale");
     ASSERT_NE(first, std::string::npos) << text;
     EXPECT_EQ(text.find("non-uniform scale", first + 1), std::string::npos) << "said once";
+}
+
+namespace {
+
+// A lake (level 0) holding a pond (level 3, 8 m square at (0, 12)) with a bed 1 m down, 6 m wide
+// and 12 m long (it runs on under the banks ahead and behind, where the eye's rays through the
+// pond go on to; beside the pond there is none, so the pond's surface shows from below there);
+// the lake's bed 1.5 m down. Emissive beds: lighting cannot change them. No glow.
+struct TwoBodies {
+    osg::ref_ptr<WaterNode> lake = new WaterNode, pond = new WaterNode;
+    const osg::Vec3 lakeBed{ 0.3f, 0.3f, 0.3f }, pondBed{ 0.6f, 0.5f, 0.4f };
+    const double pondLevel = 3.0, pondBedZ = 2.0, pondY = 12.0;
+
+    TwoBodies()
+    {
+        for (WaterNode* w : { lake.get(), pond.get() }) {
+            w->getSurface()->setWaves({});
+            w->getSettings()->setGlowEnabled(false);
+            w->getSettings()->setFovExtension(1.5f, 1.5f, 10.0f);
+        }
+        lake->getSurface()->setSize(200.0f);
+        pond->getSurface()->setSize(8.0f);
+        pond->getSurface()->setCenter(osg::Vec2(0.0f, float(pondY)));
+        pond->getSurface()->setLevel(pondLevel);
+        const float b = 100.0f, p = 3.0f, z = float(pondBedZ), y = float(pondY);
+        lake->addChild(emissiveQuad(osg::Vec3(-b, -b, -1.5f), osg::Vec3(b, -b, -1.5f), osg::Vec3(b, b, -1.5f),
+                                    osg::Vec3(-b, b, -1.5f), osg::Vec4(lakeBed, 1)));
+        pond->addChild(emissiveQuad(osg::Vec3(-p, y - 2 * p, z), osg::Vec3(p, y - 2 * p, z), osg::Vec3(p, y + 2 * p, z),
+                                    osg::Vec3(-p, y + 2 * p, z), osg::Vec4(pondBed, 1)));
+        lake->addChild(pond.get());
+    }
+};
+
+}
+
+TEST(RenderBodies, APondAboveALakeRendersItsOwnPassesAndIsAGuestInTheLakes)
+{
+    Harness h(200, 150);
+    REQUIRE_GL(h);
+    TwoBodies s;
+    h.setScene(s.lake.get());
+    const osg::Vec3d eye(0, -4, 7);
+    h.lookAt(eye, osg::Vec3d(0, 12, 2.5));
+    h.frame(0.0);
+    osg::ref_ptr<osg::Image> img = h.readColor();
+    ASSERT_TRUE(allFinite(img.get()));
+
+    // no recursion: the pond has passes for the view, none for the lake's passes
+    ViewPasses* lakePasses = s.lake->getViewPasses(h.camera());
+    ASSERT_NE(lakePasses, nullptr);
+    ASSERT_NE(s.pond->getViewPasses(h.camera()), nullptr);
+    EXPECT_EQ(s.pond->getViewPasses(lakePasses->getReflectionCamera()), nullptr);
+    EXPECT_EQ(s.pond->getViewPasses(lakePasses->getRefractionCamera()), nullptr);
+
+    // 1. the pond, through its own passes: eq. 9 of eq. 5 of its bed and the sky, per pixel
+    const WaterSettings& ps = *s.pond->getSettings();
+    const osg::Matrixd inv = osg::Matrixd::inverse(h.camera()->getViewMatrix() * h.camera()->getProjectionMatrix());
+    const glm::vec3 sky(0.2f, 0.3f, 0.8f), bed(s.pondBed.x(), s.pondBed.y(), s.pondBed.z());
+    const osg::Vec3 body = ps.getBodyColor(), k = ps.getViewExtinction();
+    int checked = 0;
+    double worst = 0.0;
+    for (int y = 1; y < h.height(); y += 2)
+        for (int x = 1; x < h.width(); x += 2) {
+            const double nx = (x + 0.5) / h.width() * 2 - 1, ny = (y + 0.5) / h.height() * 2 - 1;
+            osg::Vec3d d = osg::Vec3d(nx, ny, 1) * inv - osg::Vec3d(nx, ny, -1) * inv;
+            d.normalize();
+            if (d.z() > -0.05) continue;
+            const osg::Vec3d U = eye + d * ((s.pondLevel - eye.z()) / d.z());
+            if (std::fabs(U.x()) > 2.0 || std::fabs(U.y() - s.pondY) > 2.0) continue; // well inside the pond
+            const glm::vec3 I(d.x(), d.y(), d.z()), u(U.x(), U.y(), U.z());
+            const glm::vec3 R = optics::refract(I, glm::vec3(0, 0, 1), ps.getAirIOR() / ps.getWaterIOR());
+            glm::vec3 X;
+            ASSERT_TRUE(optics::intersectPlaneZ(u, R, float(s.pondBedZ), X));
+            const glm::vec3 refr = optics::waterTint(bed, glm::vec3(body.x(), body.y(), body.z()),
+                                                     optics::attenuation(glm::vec3(k.x(), k.y(), k.z()),
+                                                                         glm::length(X - u)));
+            const float F = optics::fresnelSchlick(-I.z, ps.getNormalReflectance(), ps.getFresnelExponent());
+            const glm::vec3 expect = optics::fresnelMix(refr, sky, F);
+            const float* c = pixel(img.get(), x, y);
+            for (int i = 0; i < 3; ++i) worst = std::max(worst, double(std::fabs(c[i] - expect[i])));
+            ++checked;
+        }
+    EXPECT_GT(checked, 40);
+    EXPECT_LT(worst, 0.01) << "the pond's own passes, 8-bit: tolerance 0.01";
+
+    // 2. the pond in the lake's reflection: its bed, and its surface as a guest (body colour and
+    //    the sky's light by Fresnel at the mirrored eye, seen from below)
+    ReflectionCamera* rc = lakePasses->getReflectionCamera();
+    osg::ref_ptr<osg::Image> refl = h.readTexture(rc->getColorTexture());
+    auto reflected = [&](const osg::Vec3d& p) {
+        const osg::Vec3d t = projectToTexture(p, rc->getViewMatrix(), rc->getProjectionMatrix());
+        const float* c = pixel(refl.get(), int(t.x() * refl->s()), int(t.y() * refl->t()));
+        return osg::Vec3(c[0], c[1], c[2]);
+    };
+    const osg::Vec3 bedSeen = reflected(osg::Vec3d(0, s.pondY, s.pondBedZ));
+    EXPECT_LT((bedSeen - s.pondBed).length(), 0.02f) << "the pond's bed in the lake's reflection";
+    const osg::Vec3d ring(3.6, s.pondY, s.pondLevel); // pond surface beyond its bed
+    const osg::Vec3d mirroredEye = osg::Vec3d(0, 0, 0) * osg::Matrixd::inverse(rc->getViewMatrix());
+    osg::Vec3d E = mirroredEye - ring;
+    E.normalize();
+    const float F = optics::fresnelSchlick(float(std::fabs(E.z())), ps.getNormalReflectance(), ps.getFresnelExponent());
+    const osg::Vec3 ambient = ps.getAmbientColor();
+    const osg::Vec3 guestE = body + (ambient - body) * F;
+    const osg::Vec3 guestSeen = reflected(ring);
+    EXPECT_LT((guestSeen - guestE).length(), 0.02f) << "guest surface: (" << guestSeen.x() << ", " << guestSeen.y()
+                                                    << ", " << guestSeen.z() << ")";
 }

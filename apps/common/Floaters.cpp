@@ -1,24 +1,7 @@
 #include "Floaters.h"
-#include <osg/Geode>
-#include <osg/Material>
-#include <osg/ShapeDrawable>
+#include "Solid.h"
 
 namespace osgWaterApps {
-
-namespace {
-
-osg::Geode* solid(const osg::Vec4& colour, std::initializer_list<osg::Shape*> shapes)
-{
-    osg::Geode* geode = new osg::Geode;
-    for (osg::Shape* s : shapes) geode->addDrawable(new osg::ShapeDrawable(s));
-    osg::ref_ptr<osg::Material> m = new osg::Material;
-    m->setDiffuse(osg::Material::FRONT_AND_BACK, colour);
-    m->setAmbient(osg::Material::FRONT_AND_BACK, colour);
-    geode->getOrCreateStateSet()->setAttribute(m.get());
-    return geode;
-}
-
-}
 
 osg::ref_ptr<osg::Switch> addFloaters(osgWater::WaterNode* water, const osg::Vec2d& buoyAt, const osg::Vec2d& boatAt, bool on)
 {

@@ -21,6 +21,7 @@ void LakeOptions::describe(osg::ApplicationUsage& u)
     u.addCommandLineOption("--time <t>", "Simulation time of the first frame, seconds (default 10)");
     u.addCommandLineOption("--no-hud", "Hide the on-screen text");
     u.addCommandLineOption("--floaters", "Show the buoy and the boat riding the waves (key b)");
+    u.addCommandLineOption("--pond", "Show a garden pond on the north rim, a second water above the lake (key p)");
     u.addCommandLineOption("--lookup <one-step|iterative>", "Refraction lookup technique");
     u.addCommandLineOption("--steps <n>", "Candidates of the iterative search (1-8)");
     u.addCommandLineOption("--fresnel <schlick|power|exact>", "Fresnel model");
@@ -57,6 +58,7 @@ bool LakeOptions::read(osg::ArgumentParser& args)
     if (args.read("--compare-glow")) compareGlow = true;
     if (args.read("--no-hud")) hud = false;
     if (args.read("--floaters")) floaters = true;
+    if (args.read("--pond")) pond = true;
     args.read("--screenshot", screenshot);
     args.read("--size", width, height);
     args.read("--eye", eye.x(), eye.y(), eye.z());

@@ -22,6 +22,7 @@ struct LakeOptions {
     std::string screenshot = "osgwaterlake.png";
     bool hud = true;
     bool floaters = false;         // the buoy and the boat (key b)
+    bool pond = false;             // the pond above the lake (key p)
     std::string waterType = "clear-lake"; // a WaterTypes preset, or "thesis"
 
     static void describe(osg::ApplicationUsage& usage);

@@ -28,17 +28,22 @@ bool WaterKeys::handle(const osgGA::GUIEventAdapter& ea, osgGA::GUIActionAdapter
         m->setByMatrix(goBelow ? _below : _above);
         return true;
     }
-    case 'b':
-        if (!_floaters.valid() || _floaters->getNumChildren() == 0) return false;
-        if (_floaters->getValue(0)) _floaters->setAllChildrenOff();
-        else _floaters->setAllChildrenOn();
-        return true;
     case 'g': // auto -> copy -> texture -> cpu -> auto
         s.setCausticsGather(WaterSettings::CausticsGather((int(s.getCausticsGather()) + 1) % 4));
         return true;
     default: break;
     }
-    return false;
+    auto toggle = _toggles.find(ea.getKey());
+    if (toggle == _toggles.end() || toggle->second.props->getNumChildren() == 0) return false;
+    osg::Switch* props = toggle->second.props.get();
+    if (props->getValue(0)) props->setAllChildrenOff();
+    else props->setAllChildrenOn();
+    return true;
+}
+
+void WaterKeys::addToggle(int key, osg::Switch* props, const std::string& what)
+{
+    if (props) _toggles[key] = Toggle{ props, what };
 }
 
 bool WalkManipulator::handleKeyDown(const osgGA::GUIEventAdapter& ea, osgGA::GUIActionAdapter& aa)
@@ -70,6 +75,6 @@ void WaterKeys::getUsage(osg::ApplicationUsage& u) const
     u.addKeyboardMouseBinding("u", "Go under water / back above it");
     u.addKeyboardMouseBinding("n", "Next underwater model (physical, thesis)");
     u.addKeyboardMouseBinding("l", "Toggle the sun's glow");
-    u.addKeyboardMouseBinding("b", "Show / hide the buoy and the boat");
+    for (const auto& t : _toggles) u.addKeyboardMouseBinding(std::string(1, char(t.first)), "Show / hide " + t.second.what);
     u.addKeyboardMouseBinding("Arrows, Page Up/Down", "Move the camera");
 }

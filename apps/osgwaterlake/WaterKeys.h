@@ -5,6 +5,8 @@
 #include <osgGA/FirstPersonManipulator>
 #include <osg/observer_ptr>
 #include <osg/Switch>
+#include <map>
+#include <string>
 
 //! Toggles water effects and techniques on key presses.
 class WaterKeys : public osgGA::GUIEventHandler
@@ -14,15 +16,16 @@ public:
     //! 'u' moves the camera between these two views (above the water, under it).
     void setViews(osgGA::CameraManipulator* manipulator, const osg::Matrixd& above, const osg::Matrixd& below)
     { _manipulator = manipulator; _above = above; _below = below; }
-    //! 'b' shows and hides these (the buoy and the boat).
-    void setFloaters(osg::Switch* floaters) { _floaters = floaters; }
+    //! `key` shows and hides the children of `props` ('b' the buoy and the boat, 'p' the pond).
+    void addToggle(int key, osg::Switch* props, const std::string& what);
     bool handle(const osgGA::GUIEventAdapter& ea, osgGA::GUIActionAdapter& aa) override;
     void getUsage(osg::ApplicationUsage& usage) const override;
 
 private:
     osg::ref_ptr<osgWater::WaterNode> _water;
     osg::observer_ptr<osgGA::CameraManipulator> _manipulator;
-    osg::ref_ptr<osg::Switch> _floaters;
+    struct Toggle { osg::ref_ptr<osg::Switch> props; std::string what; };
+    std::map<int, Toggle> _toggles;
     osg::Matrixd _above, _below; // camera (inverse view) matrices
 };
 

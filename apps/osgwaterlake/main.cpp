@@ -6,6 +6,7 @@
 #include "LakeOptions.h"
 #include "WaterKeys.h"
 #include "../common/Floaters.h"
+#include "../common/Pond.h"
 #include "../common/FrameTimer.h"
 #include "../common/SceneWater.h"
 #include <osgDB/FileNameUtils>
@@ -127,7 +128,8 @@ int runHeadless(osgViewer::Viewer& viewer, osg::Switch* scenes, osgWater::WaterN
     return 0;
 }
 
-int runWindowed(osgViewer::Viewer& viewer, osgWater::WaterNode* water, osg::Switch* floaters, const LakeOptions& o)
+int runWindowed(osgViewer::Viewer& viewer, osgWater::WaterNode* water, osg::Switch* floaters, osg::Switch* pond,
+                const LakeOptions& o)
 {
     osg::ref_ptr<WalkManipulator> walker = new WalkManipulator;
     walker->setHomePosition(o.eye, o.center, o.up);
@@ -142,7 +144,8 @@ int runWindowed(osgViewer::Viewer& viewer, osgWater::WaterNode* water, osg::Swit
     viewer.addEventHandler(new osgViewer::StatsHandler);
     viewer.addEventHandler(new osgViewer::HelpHandler(osg::ApplicationUsage::instance()));
     osg::ref_ptr<WaterKeys> keys = new WaterKeys(water);
-    keys->setFloaters(floaters);
+    keys->addToggle('b', floaters, "the buoy and the boat");
+    keys->addToggle('p', pond, "the pond above the lake");
     const osg::Vec3d aboveEye = o.underwater ? LakeOptions().eye : o.eye;
     const osg::Vec3d aboveCenter = o.underwater ? LakeOptions().center : o.center;
     keys->setViews(manipulators.get(), osg::Matrixd::inverse(osg::Matrixd::lookAt(aboveEye, aboveCenter, o.up)),
@@ -193,10 +196,13 @@ int main(int argc, char** argv)
     water->setPassTimingEnabled(true);
     // a buoy and a boat in the default view's water, riding the waves (--floaters, key b)
     osg::ref_ptr<osg::Switch> floaters = osgWaterApps::addFloaters(water.get(), osgWaterApps::kLakeBuoy, osgWaterApps::kLakeBoat, o.floaters);
+    // a second body of water on the north rim, above the lake's (--pond, key p)
+    osg::ref_ptr<osg::Switch> pond = osgWaterApps::addPond(water.get(), osgWaterApps::kLakePond, o.pond);
 
-    // the same scene without the water, for the frame-time baseline
+    // the same scene without the water (the pond's either), for the frame-time baseline
     osg::ref_ptr<osg::Group> plain = new osg::Group;
-    for (unsigned i = 0; i < water->getNumChildren(); ++i) plain->addChild(water->getChild(i));
+    for (unsigned i = 0; i < water->getNumChildren(); ++i)
+        if (water->getChild(i) != pond.get()) plain->addChild(water->getChild(i));
     osg::ref_ptr<osg::Switch> scenes = new osg::Switch;
     scenes->addChild(loaded.get(), true);
     scenes->addChild(plain.get(), false);
@@ -212,5 +218,5 @@ int main(int argc, char** argv)
     osg::ref_ptr<osg::Camera> hud = o.hud ? createHud(water.get(), viewer.getCamera(), o.width, o.height) : nullptr;
     if (hud.valid()) root->addChild(hud.get());
     viewer.setSceneData(root.get());
-    return o.headless ? runHeadless(viewer, scenes.get(), water.get(), hud.get(), o) : runWindowed(viewer, water.get(), floaters.get(), o);
+    return o.headless ? runHeadless(viewer, scenes.get(), water.get(), hud.get(), o) : runWindowed(viewer, water.get(), floaters.get(), pond.get(), o);
 }
