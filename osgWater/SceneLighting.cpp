@@ -24,6 +24,9 @@ void osgWater::applySceneLighting(osg::StateSet* ss, const SceneLighting& l, con
     setUniform(ss, "osgWater_FogColor", osg::Vec3f(l.fogColor));
     setUniform(ss, "osgWater_FogExtinction", osg::Vec3f(l.fogExtinction));
     setUniform(ss, "osgWater_EyeUnit", float(localLengthPerEyeLength(view)));
+    // variants, not branches: a pass without water between its eye and the scene (every pass with
+    // the eye above the water) compiles no fog at all (a software rasteriser runs both sides of a branch)
+    setDefineIf(ss, "OSGWATER_FOG", l.fogExtinction != osg::Vec3());
     setUniform(ss, "osgWater_WaterPlane", osg::Vec4f(planeToEye(osg::Vec4d(0.0, 0.0, 1.0, -l.level), view)));
 
     if (l.clip) {
@@ -39,6 +42,7 @@ void osgWater::applySceneLighting(osg::StateSet* ss, const SceneLighting& l, con
     setUniform(ss, "osgWater_EyeToSun", c ? osg::Matrixf(osg::Matrixd::inverse(view) * c->localToSun) : osg::Matrixf());
     setUniform(ss, "osgWater_SunDepthBias", c ? c->depthBias : osg::Vec2f(0.0f, 0.0f));
     setUniform(ss, "osgWater_CausticsChannels", c ? c->channelExtinction : osg::Vec3f());
+    setDefineIf(ss, "OSGWATER_CAUSTICS_CHANNELS", c && c->channelExtinction != osg::Vec3f());
     if (c) {
         ss->setTextureAttribute(UNIT_CAUSTICS, c->caustics.get());
         ss->setTextureAttribute(UNIT_SUN_DEPTH, c->depth.get());

@@ -21,6 +21,10 @@ vec3 owUnderwaterSun(float ndl)
     float tanSlope = sqrt(max(1.0 - ndl * ndl, 0.0)) / max(ndl, 0.1);
     float bias = osgWater_SunDepthBias.x + osgWater_SunDepthBias.y * tanSlope;
     if (vSun.z > texture(osgWater_SunDepth, vSun.xy).r + bias) return vec3(0.0);
+#ifdef OSGWATER_CAUSTICS_CHANNELS
     return osgWater_Caustics.y * texture(osgWater_CausticsTex, vSun.xy).r
          * exp(osgWater_CausticsChannels * vAboveWater);
+#else
+    return vec3(osgWater_Caustics.y * texture(osgWater_CausticsTex, vSun.xy).r);
+#endif
 }

@@ -1,5 +1,5 @@
 #version 130
-#pragma import_defines(OSGWATER_FRESNEL)
+#pragma import_defines(OSGWATER_FRESNEL, OSGWATER_FOG)
 // A water met inside another water's pass (its reflection, refraction, sun depth or glow) has no
 // passes of its own there: no recursion, nearly no cost. It shows the deep water's body colour
 // and, by the Fresnel share, the sky's light (the scene's ambient) it reflects; the host pass's
@@ -23,6 +23,9 @@ void main()
     // either side alike (a host's mirrored camera sees it from below): no passes, no Snell window
     float F = owFresnel(abs(dot(E, N)), osgWater_IOR.x, osgWater_IOR.y, osgWater_FresnelQ);
     vec3 c = osgWater_WaterColor + F * (osgWater_Ambient - osgWater_WaterColor);
+#ifdef OSGWATER_FOG
     vec3 a = exp(-osgWater_FogExtinction * (length(vEyePos) * osgWater_EyeUnit));
-    gl_FragColor = vec4(osgWater_FogColor + a * (c - osgWater_FogColor), 1.0);
+    c = osgWater_FogColor + a * (c - osgWater_FogColor);
+#endif
+    gl_FragColor = vec4(c, 1.0);
 }

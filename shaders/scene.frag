@@ -1,4 +1,5 @@
 #version 130
+#pragma import_defines(OSGWATER_FOG, OSGWATER_CAUSTICS_CHANNELS)
 // Fixed-function look of the OBJ loader's geometry: material * texture, one sun + ambient.
 // Under water, where caustics are on, the direct sun is the caustic irradiance of the photon pass
 // (thesis ch. 8), and zero where the sun's depth map shows something between the fragment and the
@@ -29,7 +30,9 @@ void main()
            + gl_FrontMaterial.ambient.rgb * osgWater_Ambient
            + gl_FrontMaterial.diffuse.rgb * osgWater_SunColor * (ndl * sun);
     c *= tex.rgb;
+#ifdef OSGWATER_FOG
     vec3 a = exp(-osgWater_FogExtinction * (length(vEyePos) * osgWater_EyeUnit)); // eq. 4 with d = |A - C|, per channel
     c = osgWater_FogColor + a * (c - osgWater_FogColor);     // eq. 10
+#endif
     gl_FragColor = vec4(c, gl_FrontMaterial.diffuse.a * tex.a);
 }
