@@ -26,7 +26,7 @@ void LakeOptions::describe(osg::ApplicationUsage& u)
     u.addCommandLineOption("--steps <n>", "Candidates of the iterative search (1-8)");
     u.addCommandLineOption("--fresnel <schlick|power|exact>", "Fresnel model");
     u.addCommandLineOption("--q <q>", "Fresnel exponent");
-    u.addCommandLineOption("--water-type <name>", "The water: " + osgWater::waterTypeNames() + " (per-channel absorption and scattering; default clear-lake), or thesis (one k, one colour)");
+    u.addCommandLineOption("--water-type <name>", "The water: " + osgWater::waterTypeNames() + " (per-channel absorption and scattering; default clear-lake), or thesis (one k, one colour; the default with --k or --water-color)");
     u.addCommandLineOption("--k <k>", "Attenuation per metre (thesis model)");
     u.addCommandLineOption("--c <c>", "Reflection lookup scale");
     u.addCommandLineOption("--water-color <r> <g> <b>", "Water colour (thesis model)");
@@ -86,7 +86,10 @@ bool LakeOptions::read(osg::ArgumentParser& args)
         });
     }
     if (args.read("--q", f)) _setters.push_back([f](WaterSettings& w) { w.setFresnelExponent(f); });
-    if (args.read("--water-type", s)) waterType = s;
+    const bool typeGiven = args.read("--water-type", s);
+    if (typeGiven) waterType = s;
+    // the thesis model's own knobs ask for the thesis model, unless a type is named too
+    if (!typeGiven && (args.find("--k") > 0 || args.find("--water-color") > 0)) waterType = "thesis";
     if (waterType != "thesis" && !osgWater::findWaterType(waterType)) {
         std::cerr << "error: --water-type " << waterType << ": not one of " << osgWater::waterTypeNames() << ", thesis"
                   << std::endl;
