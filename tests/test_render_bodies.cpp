@@ -1,6 +1,6 @@
 // Water where applications put it: under a MatrixTransform (moved, turned about z, scaled) and
 // several bodies at different levels, each rendering its own passes and appearing in the other's
-// as a guest without recursion. Checked against the same water untransformed and the Optics mirror.
+// as a guest without recursion. Checked against the Optics mirror and the same water untransformed.
 #include "GLHarness.h"
 #include "WarnCapture.h"
 #include <osgWater/WaterNode>
@@ -92,6 +92,63 @@ TEST(RenderBodies, ATransformedWaterLooksAsTheSameWaterSeenFromTheMovedEye)
         RecordProperty(eye.z() > 0 ? "share_differing_above" : "share_differing_below", std::to_string(share));
         EXPECT_LT(share, 0.002) << "pixels differing by more than 0.03 from every neighbour";
     }
+}
+
+TEST(RenderBodies, ATransformedWaterHoldsToTheOpticsMirror)
+{
+    // flat water over a grey bed 1.5 m down, under T (moved, turned, scaled 2x): every water pixel
+    // is eq. 9 of eq. 5 of the bed and the sky along the pixel's ray taken into the water's frame,
+    // with the path under water in local metres
+    Harness h(160, 120);
+    REQUIRE_GL(h);
+    osg::ref_ptr<WaterNode> water = new WaterNode;
+    water->getSurface()->setWaves({});
+    water->getSurface()->setSize(400.0f);
+    water->getSettings()->setFovExtension(1.5f, 1.5f, 10.0f);
+    water->getSettings()->setAttenuation(0.3f);
+    const float depth = 1.5f;
+    water->addChild(emissiveQuad(osg::Vec3(-100, -100, -depth), osg::Vec3(100, -100, -depth),
+                                 osg::Vec3(100, 100, -depth), osg::Vec3(-100, 100, -depth), osg::Vec4(0.6f, 0.5f, 0.4f, 1)));
+    const osg::Matrixd T = osg::Matrixd::scale(2, 2, 2) * osg::Matrixd::rotate(osg::DegreesToRadians(40.0), 0, 0, 1)
+                         * osg::Matrixd::translate(100, -50, 20);
+    osg::ref_ptr<osg::MatrixTransform> moved = new osg::MatrixTransform(T);
+    moved->addChild(water.get());
+    h.setScene(moved.get());
+    const osg::Vec3d eyeLocal(0, -3, 2.5);
+    h.lookAt(eyeLocal * T, osg::Vec3d(0, 8, -1.5) * T);
+    h.frame(0.0);
+    osg::ref_ptr<osg::Image> img = h.readColor();
+    ASSERT_TRUE(allFinite(img.get()));
+
+    const WaterSettings* s = water->getSettings();
+    const osg::Matrixd toLocal = osg::Matrixd::inverse(T);
+    const osg::Matrixd inv = osg::Matrixd::inverse(h.camera()->getViewMatrix() * h.camera()->getProjectionMatrix());
+    const glm::vec3 sky(0.2f, 0.3f, 0.8f), bed(0.6f, 0.5f, 0.4f);
+    const osg::Vec3 body = s->getBodyColor(), k = s->getViewExtinction();
+    int checked = 0;
+    double worst = 0.0;
+    for (int y = 2; y < h.height(); y += 7)
+        for (int x = 2; x < h.width(); x += 7) {
+            const double nx = (x + 0.5) / h.width() * 2 - 1, ny = (y + 0.5) / h.height() * 2 - 1;
+            const osg::Vec3d a = osg::Vec3d(nx, ny, -1) * inv * toLocal, b = osg::Vec3d(nx, ny, 1) * inv * toLocal;
+            osg::Vec3d d = b - a;
+            d.normalize();
+            if (d.z() > -0.05) continue;
+            const osg::Vec3d U = eyeLocal + d * (-eyeLocal.z() / d.z());
+            const glm::vec3 I(d.x(), d.y(), d.z()), u(U.x(), U.y(), U.z());
+            const glm::vec3 R = optics::refract(I, glm::vec3(0, 0, 1), s->getAirIOR() / s->getWaterIOR());
+            glm::vec3 X;
+            ASSERT_TRUE(optics::intersectPlaneZ(u, R, -depth, X));
+            const glm::vec3 refr = optics::waterTint(bed, glm::vec3(body.x(), body.y(), body.z()),
+                                                     optics::attenuation(glm::vec3(k.x(), k.y(), k.z()), glm::length(X - u)));
+            const float F = optics::fresnelSchlick(-I.z, s->getNormalReflectance(), s->getFresnelExponent());
+            const glm::vec3 expect = optics::fresnelMix(refr, sky, F);
+            const float* c = pixel(img.get(), x, y);
+            for (int i = 0; i < 3; ++i) worst = std::max(worst, double(std::fabs(c[i] - expect[i])));
+            ++checked;
+        }
+    EXPECT_GT(checked, 100);
+    EXPECT_LT(worst, 0.01) << "8-bit pass textures: tolerance 0.01";
 }
 
 TEST(RenderBodies, ANonUniformScaleIsWarnedAboutOnce)
