@@ -31,7 +31,7 @@ std::vector<WaterType> makeTypes()
     std::vector<WaterType> t;
     // oligotrophic mountain lake: little CDOM, few particles; ~10 m clarity, blue-green shallows
     t.push_back({ "clear-lake", "clear mountain lake", { 0.05f, 0.01f, 0.15f }, {} });
-    // eutrophic pond: humic CDOM, algae and silt; brown-green, the bed gone below ~1 m
+    // eutrophic pond: humic CDOM, algae and silt; brown-green, ~1 m clarity
     t.push_back({ "murky-pond", "murky pond", { 1.0f, 0.5f, 1.5f }, {} });
     // oligotrophic tropical sea (Jerlov oceanic type I): ~20 m clarity, deep blue
     t.push_back({ "tropical-sea", "tropical sea", { 0.01f, 0.005f, 0.05f }, {} });

@@ -156,7 +156,9 @@ bool writeDocs(const std::string& dir, const RunInfo& info, const std::vector<Re
        << ", frame time = median of " << info.frames << " frames after warm-up, plain scene (water removed) timed "
        << "in the same run just before and after each technique (ratio = frame / plain)\n"
        << "- Reference: Embree ray casting over the triangles the GPU draws at the view's time; caustics by "
-       << info.photons << " photons traced from the sun\n\n";
+       << info.photons << " photons traced from the sun\n"
+       << "- Height queries (`WaterNode::getSurfaceHeightAt` with the normal, the scene's waves, one thread): "
+       << fmt(info.heightQueriesPerSecond / 1.0e6, 2, " million") << " per second\n\n";
 
     // targets
     const Summary* def = find(summaries, "default");

@@ -34,6 +34,7 @@ struct RunInfo {
     size_t photons = 0;
     unsigned int cpus = 0;
     bool quick = false;
+    double heightQueriesPerSecond = 0.0; //!< WaterNode::getSurfaceHeightAt with the normal, one thread
 };
 
 bool writeJson(const std::string& file, const std::vector<Record>& records, std::string& error);

@@ -16,7 +16,9 @@
 #include <osg/GL>
 #include <osg/Switch>
 #include <osg/Timer>
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <ctime>
 #include <thread>
@@ -104,6 +106,29 @@ Summary summarize(const std::string& name, const std::vector<Record>& records, s
 
 }
 
+
+// WaterNode::getSurfaceHeightAt with the normal, on one thread: a grid of points over the surface's
+// box visited `n` times in all (the median of five such runs)
+double heightQueriesPerSecond(const osgWater::WaterNode& water, int n)
+{
+    const osg::BoundingBox& box = water.getSurface()->getBoundingBox();
+    std::vector<double> rates;
+    double sink = 0.0;
+    for (int run = 0; run < 5; ++run) {
+        const osg::Timer_t start = osg::Timer::instance()->tick();
+        for (int i = 0; i < n; ++i) {
+            const double u = (i % 1009) / 1009.0, v = (i / 1009 % 997) / 997.0;
+            osg::Vec3d normal;
+            sink += water.getSurfaceHeightAt(box.xMin() + u * (box.xMax() - box.xMin()),
+                                             box.yMin() + v * (box.yMax() - box.yMin()), 10.0 + run, &normal) + normal.z();
+        }
+        rates.push_back(n / std::max(osg::Timer::instance()->delta_s(start, osg::Timer::instance()->tick()), 1e-9));
+    }
+    if (!std::isfinite(sink)) std::cout << "height queries gave a non-finite value" << std::endl;
+    std::sort(rates.begin(), rates.end());
+    return rates[rates.size() / 2];
+}
+
 int main(int argc, char** argv)
 {
     BenchOptions o;
@@ -176,6 +201,9 @@ int main(int argc, char** argv)
     timing.getCamera()->setViewMatrixAsLookAt(views[0].eye, views[0].center, views[0].up);
     timeFrames(timing, t, o.quick ? 2 : 30, 0);
     if (const GLubyte* r = glGetString(GL_RENDERER)) info.renderer = reinterpret_cast<const char*>(r);
+    info.heightQueriesPerSecond = heightQueriesPerSecond(*water, o.quick ? 20000 : 2000000);
+    std::cout << "height queries (with normal, one thread): " << std::lround(info.heightQueriesPerSecond)
+              << " per second" << std::endl;
 
     const osg::ref_ptr<osgWater::WaterSettings> base =
         new osgWater::WaterSettings(*water->getSettings(), osg::CopyOp::DEEP_COPY_ALL);
