@@ -6,6 +6,9 @@
 #include <osg/Geometry>
 #include <osg/Image>
 #include <gtest/gtest.h>
+#include <osgWater/WaterSettings>
+#include <osgWater/WaterSurface>
+#include <functional>
 #include <cstdlib>
 #include <ostream>
 #include <string>
@@ -110,5 +113,23 @@ void dumpImage(const osg::Image* img, const std::string& name);
 //! WaterTypes by name. INSTANTIATE_TEST_SUITE_P(Models, Suite, waterModels(), waterModelTestName).
 ::testing::internal::ParamGenerator<std::string> waterModels();
 std::string waterModelTestName(const ::testing::TestParamInfo<std::string>& info);
+
+//! A wave of the sum of sines, for surfaces built in tests.
+osgWater::Wave makeWave(float dx, float dy, float wavelength, float amplitude);
+
+//! The Optics mirror against a rendered image of flat water at `level` over a uniform emissive bed
+//! of colour `bed` at `bedZ`, with the clear colour (the sky) reflected: each `step`-th pixel whose
+//! ray, taken into the water's frame by `toWater`, meets the surface at a U that `keep` accepts is
+//! compared with eq. 9 of eq. 5 along the exact refracted path (Schlick Fresnel, the settings'
+//! model per channel, the path in the water's metres). Rays within 0.05 of level are left out.
+struct MirrorComparison {
+    int checked = 0;      //!< pixels compared
+    double worst = 0.0;   //!< largest channel difference
+    bool bedMissed = false; //!< a refracted ray that never reached the bed (a bad test scene)
+};
+MirrorComparison compareFlatWaterWithOptics(Harness& h, const osg::Image* img, const osgWater::WaterSettings& s,
+                                            const osg::Matrixd& toWater, double level, double bedZ,
+                                            const osg::Vec3& bed, int step,
+                                            const std::function<bool(const osg::Vec3d&)>& keep = nullptr);
 
 }

@@ -57,6 +57,13 @@ osg::Vec2d project(const osg::Vec3d& p)
     return osg::Vec2d((c.x() / c.w() * 0.5 + 0.5) * W, (c.y() / c.w() * 0.5 + 0.5) * H);
 }
 
+// the demo's scene loaded as the demo loads it, and its water (null if the file is missing)
+osg::ref_ptr<osgWater::WaterNode> loadLake(osg::ref_ptr<osg::Node>& scene)
+{
+    scene = osgDB::readRefNodeFile(OSGWATER_LAKE_SCENE);
+    return scene.valid() ? osgWaterApps::findOrAddWater(scene, OSGWATER_LAKE_SCENE) : nullptr;
+}
+
 float luminance(const osg::Vec3& c) { return 0.2126f * c.x() + 0.7152f * c.y() + 0.0722f * c.z(); }
 
 // where the eye ray through a pixel meets the water plane, if nothing above the water is in the way
@@ -207,9 +214,9 @@ TEST(LakeDemo, TheBuoyAndTheBoatRideTheWaves)
     // surface normal
     testing_gl::Harness h(64, 48);
     REQUIRE_GL(h);
-    osg::ref_ptr<osg::Node> lake = osgDB::readRefNodeFile(OSGWATER_LAKE_SCENE);
-    ASSERT_TRUE(lake.valid());
-    osg::ref_ptr<osgWater::WaterNode> water = osgWaterApps::findOrAddWater(lake, OSGWATER_LAKE_SCENE);
+    osg::ref_ptr<osg::Node> lake;
+    osg::ref_ptr<osgWater::WaterNode> water = loadLake(lake);
+    ASSERT_TRUE(water.valid());
     osg::ref_ptr<osg::Switch> floaters = osgWaterApps::addFloaters(water.get(), osgWaterApps::kLakeBuoy, osgWaterApps::kLakeBoat, true);
     ASSERT_EQ(floaters->getNumChildren(), 2u);
     h.setScene(lake.get());
@@ -244,9 +251,9 @@ TEST(LakeDemo, ThePondAboveTheLakeIsWaterWithPassesOfItsOwn)
     // and not what is there without it; it renders passes for the view and none inside the lake's
     testing_gl::Harness h(400, 250);
     REQUIRE_GL(h);
-    osg::ref_ptr<osg::Node> lake = osgDB::readRefNodeFile(OSGWATER_LAKE_SCENE);
-    ASSERT_TRUE(lake.valid());
-    osg::ref_ptr<osgWater::WaterNode> water = osgWaterApps::findOrAddWater(lake, OSGWATER_LAKE_SCENE);
+    osg::ref_ptr<osg::Node> lake;
+    osg::ref_ptr<osgWater::WaterNode> water = loadLake(lake);
+    ASSERT_TRUE(water.valid());
     osg::ref_ptr<osgWater::WaterNode> pond;
     osg::ref_ptr<osg::Switch> sw = osgWaterApps::addPond(water.get(), osgWaterApps::kLakePond, false, &pond);
     ASSERT_TRUE(pond.valid());

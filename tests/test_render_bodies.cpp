@@ -16,21 +16,12 @@ using namespace osgWater;
 
 namespace {
 
-Wave wave(float dx, float dy, float wavelength, float amplitude)
-{
-    Wave w;
-    w.direction.set(dx, dy);
-    w.wavelength = wavelength;
-    w.amplitude = amplitude;
-    return w;
-}
-
 // a small lake with waves, a checker bed and a red quad above it to reflect; caustics and glow on
 osg::ref_ptr<WaterNode> wavyLake()
 {
     osg::ref_ptr<WaterNode> water = new WaterNode;
     water->getSurface()->setSize(60.0f);
-    water->getSurface()->setWaves({ wave(1.0f, 0.3f, 4.0f, 0.04f), wave(-0.4f, 1.0f, 2.5f, 0.02f) });
+    water->getSurface()->setWaves({ makeWave(1.0f, 0.3f, 4.0f, 0.04f), makeWave(-0.4f, 1.0f, 2.5f, 0.02f) });
     water->addChild(checkerPlane(-1.5f, 60.0f, 4.0f)); // large cells: few edges to land apart
     water->addChild(emissiveQuad(osg::Vec3(-1, 10, 0.5f), osg::Vec3(1, 10, 0.5f), osg::Vec3(1, 10, 2.5f),
                                  osg::Vec3(-1, 10, 2.5f), osg::Vec4(1, 0, 0, 1)));
@@ -120,35 +111,11 @@ TEST(RenderBodies, ATransformedWaterHoldsToTheOpticsMirror)
     osg::ref_ptr<osg::Image> img = h.readColor();
     ASSERT_TRUE(allFinite(img.get()));
 
-    const WaterSettings* s = water->getSettings();
-    const osg::Matrixd toLocal = osg::Matrixd::inverse(T);
-    const osg::Matrixd inv = osg::Matrixd::inverse(h.camera()->getViewMatrix() * h.camera()->getProjectionMatrix());
-    const glm::vec3 sky(0.2f, 0.3f, 0.8f), bed(0.6f, 0.5f, 0.4f);
-    const osg::Vec3 body = s->getBodyColor(), k = s->getViewExtinction();
-    int checked = 0;
-    double worst = 0.0;
-    for (int y = 2; y < h.height(); y += 7)
-        for (int x = 2; x < h.width(); x += 7) {
-            const double nx = (x + 0.5) / h.width() * 2 - 1, ny = (y + 0.5) / h.height() * 2 - 1;
-            const osg::Vec3d a = osg::Vec3d(nx, ny, -1) * inv * toLocal, b = osg::Vec3d(nx, ny, 1) * inv * toLocal;
-            osg::Vec3d d = b - a;
-            d.normalize();
-            if (d.z() > -0.05) continue;
-            const osg::Vec3d U = eyeLocal + d * (-eyeLocal.z() / d.z());
-            const glm::vec3 I(d.x(), d.y(), d.z()), u(U.x(), U.y(), U.z());
-            const glm::vec3 R = optics::refract(I, glm::vec3(0, 0, 1), s->getAirIOR() / s->getWaterIOR());
-            glm::vec3 X;
-            ASSERT_TRUE(optics::intersectPlaneZ(u, R, -depth, X));
-            const glm::vec3 refr = optics::waterTint(bed, glm::vec3(body.x(), body.y(), body.z()),
-                                                     optics::attenuation(glm::vec3(k.x(), k.y(), k.z()), glm::length(X - u)));
-            const float F = optics::fresnelSchlick(-I.z, s->getNormalReflectance(), s->getFresnelExponent());
-            const glm::vec3 expect = optics::fresnelMix(refr, sky, F);
-            const float* c = pixel(img.get(), x, y);
-            for (int i = 0; i < 3; ++i) worst = std::max(worst, double(std::fabs(c[i] - expect[i])));
-            ++checked;
-        }
-    EXPECT_GT(checked, 100);
-    EXPECT_LT(worst, 0.01) << "8-bit pass textures: tolerance 0.01";
+    const MirrorComparison m = compareFlatWaterWithOptics(h, img.get(), *water->getSettings(), osg::Matrixd::inverse(T),
+                                                          0.0, -depth, osg::Vec3(0.6f, 0.5f, 0.4f), 7);
+    EXPECT_FALSE(m.bedMissed);
+    EXPECT_GT(m.checked, 100);
+    EXPECT_LT(m.worst, 0.01) << "8-bit pass textures: tolerance 0.01";
 }
 
 TEST(RenderBodies, ANonUniformScaleIsWarnedAboutOnce)
@@ -220,36 +187,15 @@ TEST(RenderBodies, APondAboveALakeRendersItsOwnPassesAndIsAGuestInTheLakes)
     EXPECT_EQ(s.pond->getViewPasses(lakePasses->getReflectionCamera()), nullptr);
     EXPECT_EQ(s.pond->getViewPasses(lakePasses->getRefractionCamera()), nullptr);
 
-    // 1. the pond, through its own passes: eq. 9 of eq. 5 of its bed and the sky, per pixel
+    // 1. the pond, through its own passes: eq. 9 of eq. 5 of its bed and the sky, per pixel well
+    //    inside the pond
     const WaterSettings& ps = *s.pond->getSettings();
-    const osg::Matrixd inv = osg::Matrixd::inverse(h.camera()->getViewMatrix() * h.camera()->getProjectionMatrix());
-    const glm::vec3 sky(0.2f, 0.3f, 0.8f), bed(s.pondBed.x(), s.pondBed.y(), s.pondBed.z());
-    const osg::Vec3 body = ps.getBodyColor(), k = ps.getViewExtinction();
-    int checked = 0;
-    double worst = 0.0;
-    for (int y = 1; y < h.height(); y += 2)
-        for (int x = 1; x < h.width(); x += 2) {
-            const double nx = (x + 0.5) / h.width() * 2 - 1, ny = (y + 0.5) / h.height() * 2 - 1;
-            osg::Vec3d d = osg::Vec3d(nx, ny, 1) * inv - osg::Vec3d(nx, ny, -1) * inv;
-            d.normalize();
-            if (d.z() > -0.05) continue;
-            const osg::Vec3d U = eye + d * ((s.pondLevel - eye.z()) / d.z());
-            if (std::fabs(U.x()) > 2.0 || std::fabs(U.y() - s.pondY) > 2.0) continue; // well inside the pond
-            const glm::vec3 I(d.x(), d.y(), d.z()), u(U.x(), U.y(), U.z());
-            const glm::vec3 R = optics::refract(I, glm::vec3(0, 0, 1), ps.getAirIOR() / ps.getWaterIOR());
-            glm::vec3 X;
-            ASSERT_TRUE(optics::intersectPlaneZ(u, R, float(s.pondBedZ), X));
-            const glm::vec3 refr = optics::waterTint(bed, glm::vec3(body.x(), body.y(), body.z()),
-                                                     optics::attenuation(glm::vec3(k.x(), k.y(), k.z()),
-                                                                         glm::length(X - u)));
-            const float F = optics::fresnelSchlick(-I.z, ps.getNormalReflectance(), ps.getFresnelExponent());
-            const glm::vec3 expect = optics::fresnelMix(refr, sky, F);
-            const float* c = pixel(img.get(), x, y);
-            for (int i = 0; i < 3; ++i) worst = std::max(worst, double(std::fabs(c[i] - expect[i])));
-            ++checked;
-        }
-    EXPECT_GT(checked, 40);
-    EXPECT_LT(worst, 0.01) << "the pond's own passes, 8-bit: tolerance 0.01";
+    const MirrorComparison m = compareFlatWaterWithOptics(
+        h, img.get(), ps, osg::Matrixd(), s.pondLevel, s.pondBedZ, s.pondBed, 2,
+        [&](const osg::Vec3d& U) { return std::fabs(U.x()) <= 2.0 && std::fabs(U.y() - s.pondY) <= 2.0; });
+    EXPECT_FALSE(m.bedMissed);
+    EXPECT_GT(m.checked, 40);
+    EXPECT_LT(m.worst, 0.01) << "the pond's own passes, 8-bit: tolerance 0.01";
 
     // 2. the pond in the lake's reflection: its bed, and its surface as a guest (body colour and
     //    the sky's light by Fresnel at the mirrored eye, seen from below)
@@ -267,7 +213,7 @@ TEST(RenderBodies, APondAboveALakeRendersItsOwnPassesAndIsAGuestInTheLakes)
     osg::Vec3d E = mirroredEye - ring;
     E.normalize();
     const float F = optics::fresnelSchlick(float(std::fabs(E.z())), ps.getNormalReflectance(), ps.getFresnelExponent());
-    const osg::Vec3 ambient = ps.getAmbientColor();
+    const osg::Vec3 body = ps.getBodyColor(), ambient = ps.getAmbientColor();
     const osg::Vec3 guestE = body + (ambient - body) * F;
     const osg::Vec3 guestSeen = reflected(ring);
     EXPECT_LT((guestSeen - guestE).length(), 0.02f) << "guest surface: (" << guestSeen.x() << ", " << guestSeen.y()

@@ -49,6 +49,19 @@ osg::Geometry* bumpMesh(float size, int n, float x0, float y0, float h0, float s
     return g;
 }
 
+// A lit horizontal quad (white diffuse, no ambient or emission): its colour is the sun it receives.
+osg::Geode* litQuad(float x0, float y0, float x1, float y1, float z)
+{
+    osg::Geode* g = emissiveQuad(osg::Vec3(x0, y0, z), osg::Vec3(x1, y0, z), osg::Vec3(x1, y1, z), osg::Vec3(x0, y1, z),
+                                 osg::Vec4(1, 1, 1, 1));
+    osg::ref_ptr<osg::Material> m = new osg::Material;
+    m->setDiffuse(osg::Material::FRONT_AND_BACK, osg::Vec4(1, 1, 1, 1));
+    m->setAmbient(osg::Material::FRONT_AND_BACK, osg::Vec4(0, 0, 0, 1));
+    m->setEmission(osg::Material::FRONT_AND_BACK, osg::Vec4(0, 0, 0, 1));
+    g->getOrCreateStateSet()->setAttribute(m.get());
+    return g;
+}
+
 struct CausticsScene {
     Harness h{ 64, 64 };
     osg::ref_ptr<WaterNode> water = new WaterNode;
@@ -77,6 +90,29 @@ struct CausticsScene {
 
     void setGather(WaterSettings::CausticsGather g) { water->getSettings()->setCausticsGather(g); }
 
+    // the bed as a lit white surface (its colour: the sun it receives) seen through the refraction
+    // pass, a white sun, no ambient
+    void lightTheBed(float size)
+    {
+        water->removeChildren(0, water->getNumChildren());
+        water->addChild(litQuad(-size / 2, -size / 2, size / 2, size / 2, bedZ));
+        WaterSettings* s = water->getSettings();
+        s->setRefractionEnabled(true);
+        s->setAmbientColor(osg::Vec3(0, 0, 0));
+        s->setSunColor(osg::Vec3(1, 1, 1));
+    }
+
+    // a frame, then the colour the refraction pass shows at local point p
+    osg::Vec3 refracted(const osg::Vec3d& p)
+    {
+        h.frame(1.0);
+        RefractionCamera* rc = water->getViewPasses(h.camera())->getRefractionCamera();
+        osg::ref_ptr<osg::Image> img = h.readTexture(rc->getColorTexture());
+        const osg::Vec3d t = projectToTexture(p, rc->getViewMatrix(), rc->getProjectionMatrix());
+        const float* c = pixel(img.get(), int(t.x() * img->s()), int(t.y() * img->t()));
+        return osg::Vec3(c[0], c[1], c[2]);
+    }
+
     osg::ref_ptr<osg::Image> render()
     {
         h.frame(1.0);
@@ -101,19 +137,6 @@ struct CausticsScene {
         return w.x() * w.y() / (double(img->s()) * img->t());
     }
 };
-
-// A lit horizontal quad (white diffuse, no ambient or emission): its colour is the sun it receives.
-osg::Geode* litQuad(float x0, float y0, float x1, float y1, float z)
-{
-    osg::Geode* g = emissiveQuad(osg::Vec3(x0, y0, z), osg::Vec3(x1, y0, z), osg::Vec3(x1, y1, z), osg::Vec3(x0, y1, z),
-                                 osg::Vec4(1, 1, 1, 1));
-    osg::ref_ptr<osg::Material> m = new osg::Material;
-    m->setDiffuse(osg::Material::FRONT_AND_BACK, osg::Vec4(1, 1, 1, 1));
-    m->setAmbient(osg::Material::FRONT_AND_BACK, osg::Vec4(0, 0, 0, 1));
-    m->setEmission(osg::Material::FRONT_AND_BACK, osg::Vec4(0, 0, 0, 1));
-    g->getOrCreateStateSet()->setAttribute(m.get());
-    return g;
-}
 
 double value(const osg::Image* img, int i, int j) { return pixel(img, i, j)[0]; }
 
@@ -285,20 +308,10 @@ TEST(RenderCaustics, TheBedIsLitByTheCausticsAndShadowedByUnderwaterObjects)
     const osg::Vec3 sun(0.5f, 0.0f, 0.8660254f);
     CausticsScene sc(20.0f, 64, 128, sun, -2.0f);
     REQUIRE_GL(sc.h);
-    sc.water->removeChildren(0, sc.water->getNumChildren());
-    sc.water->addChild(litQuad(-10, -10, 10, 10, -2.0f));
+    sc.lightTheBed(20.0f);
     sc.water->addChild(litQuad(2, -1, 4, 1, -1.0f));
     WaterSettings* s = sc.water->getSettings();
-    s->setRefractionEnabled(true);
-    s->setAmbientColor(osg::Vec3(0, 0, 0));
-    s->setSunColor(osg::Vec3(1, 1, 1));
-    auto bedColour = [&](const osg::Vec3d& p) {
-        sc.h.frame(1.0);
-        RefractionCamera* rc = sc.water->getViewPasses(sc.h.camera())->getRefractionCamera();
-        osg::ref_ptr<osg::Image> img = sc.h.readTexture(rc->getColorTexture());
-        const osg::Vec3d t = projectToTexture(p, rc->getViewMatrix(), rc->getProjectionMatrix());
-        return double(pixel(img.get(), int(t.x() * img->s()), int(t.y() * img->t()))[0]);
-    };
+    auto bedColour = [&](const osg::Vec3d& p) { return double(sc.refracted(p).x()); };
     const double ndl = sun.z();
     // lit bed: n.L times the caustic irradiance C of flat water
     EXPECT_NEAR(bedColour(osg::Vec3d(-3, 0, -2)), ndl * flatIrradiance(ndl, 2.0), 0.01);
@@ -318,18 +331,9 @@ TEST(RenderCaustics, UnderAPerChannelWaterEachChannelOfTheSunFadesByItsOwnExtinc
     const osg::Vec3 sun(0.5f, 0.0f, 0.8660254f);
     CausticsScene sc(20.0f, 64, 128, sun, -3.0f);
     REQUIRE_GL(sc.h);
-    sc.water->removeChildren(0, sc.water->getNumChildren());
-    sc.water->addChild(litQuad(-10, -10, 10, 10, -3.0f));
-    WaterSettings* s = sc.water->getSettings();
-    applyWaterType(*s, *findWaterType("clear-lake"));
-    s->setRefractionEnabled(true);
-    s->setAmbientColor(osg::Vec3(0, 0, 0));
-    s->setSunColor(osg::Vec3(1, 1, 1));
-    sc.h.frame(1.0);
-    RefractionCamera* rc = sc.water->getViewPasses(sc.h.camera())->getRefractionCamera();
-    osg::ref_ptr<osg::Image> img = sc.h.readTexture(rc->getColorTexture());
-    const osg::Vec3d t = projectToTexture(osg::Vec3d(-3, 0, -3), rc->getViewMatrix(), rc->getProjectionMatrix());
-    const float* c = pixel(img.get(), int(t.x() * img->s()), int(t.y() * img->t()));
+    sc.lightTheBed(20.0f);
+    applyWaterType(*sc.water->getSettings(), *findWaterType("clear-lake"));
+    const osg::Vec3 c = sc.refracted(osg::Vec3d(-3, 0, -3));
     const WaterOptics& o = findWaterType("clear-lake")->optics;
     const double ndl = sun.z();
     for (int i = 0; i < 3; ++i) {

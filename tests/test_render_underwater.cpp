@@ -26,15 +26,6 @@ osg::ref_ptr<WaterNode> flatWater(float k)
     return water;
 }
 
-Wave wave(float dx, float dy, float wavelength, float amplitude)
-{
-    Wave w;
-    w.direction.set(dx, dy);
-    w.wavelength = wavelength;
-    w.amplitude = amplitude;
-    return w;
-}
-
 osg::Vec3 at(const osg::Image* img, const osg::Vec2d& p)
 {
     const float* v = pixel(img, int(p.x()), int(p.y()));
@@ -101,7 +92,7 @@ TEST(RenderUnderwater, TheWaveAtTheEyeDecidesWhichSideItIsOn)
     Harness h(64, 48);
     REQUIRE_GL(h);
     osg::ref_ptr<WaterNode> water = flatWater(0.5f);
-    water->getSurface()->setWaves({ wave(1.0f, 0.0f, 40.0f, 0.5f) });
+    water->getSurface()->setWaves({ makeWave(1.0f, 0.0f, 40.0f, 0.5f) });
     water->addChild(checkerPlane(-5.0f, 100.0f, 1.0f));
     h.setScene(water.get());
     const double xCrest = 10.0, xTrough = -10.0; // sin(k x) = +1 and -1 at t = 0 (k = 2 pi / 40)
@@ -198,7 +189,7 @@ TEST(RenderUnderwater, CrossingTheSurfaceNeverLosesTheWater)
     Harness h(96, 72);
     REQUIRE_GL(h);
     osg::ref_ptr<WaterNode> water = flatWater(0.3f);
-    water->getSurface()->setWaves({ wave(0.6f, 0.8f, 3.0f, 0.02f) });
+    water->getSurface()->setWaves({ makeWave(0.6f, 0.8f, 3.0f, 0.02f) });
     water->getSettings()->setReflectionEnabled(false);
     water->getSettings()->setWaterColor(osg::Vec3(0.0f, 0.6f, 0.0f));
     water->addChild(checkerPlane(-1.5f, 300.0f, 0.5f));
