@@ -1,13 +1,24 @@
 #!/usr/bin/env bash
-# Installs the build into a private prefix and builds + runs a consumer with find_package(osgWater).
+# Installs the build into a private prefix and builds + runs a consumer with find_package(osgWater);
+# the consumer also builds the README's code blocks marked "<!-- compiled", as written.
 set -euo pipefail
 bin="$1"; src="$2"
 # $3: compiler flags the library was built with that a consumer must share (the sanitizer build's:
 # an uninstrumented program cannot load an ASan library)
 flags="${3:-}"
-rm -rf "$bin/_install" "$bin/_consumer"
+readme="$4"
+rm -rf "$bin/_install" "$bin/_consumer" "$bin/_readme"
+mkdir -p "$bin/_readme"
+# each marked block to its own file: readme_1.cpp, readme_2.cpp, ...
+awk -v dir="$bin/_readme" '
+  /^<!-- compiled/ { marked = 1; next }
+  marked && /^```cpp/ { n++; file = dir "/readme_" n ".cpp"; inside = 1; marked = 0; next }
+  inside && /^```/ { inside = 0; close(file); next }
+  inside { print > file; next }
+  { marked = 0 }' "$readme"
+ls "$bin"/_readme/readme_*.cpp > /dev/null  # at least one block, or the README lost its examples
 cmake --install "$bin" --prefix "$bin/_install" > /dev/null
-cmake -S "$src" -B "$bin/_consumer" -DCMAKE_PREFIX_PATH="$bin/_install" \
+cmake -S "$src" -B "$bin/_consumer" -DCMAKE_PREFIX_PATH="$bin/_install" -DREADME_BLOCKS="$bin/_readme" \
   ${flags:+"-DCMAKE_CXX_FLAGS=$flags" "-DCMAKE_EXE_LINKER_FLAGS=$flags"} > /dev/null
 cmake --build "$bin/_consumer" > /dev/null
 LD_LIBRARY_PATH="$bin/_install/lib:$bin/_install/lib/x86_64-linux-gnu:${LD_LIBRARY_PATH:-}" "$bin/_consumer/consumer"
