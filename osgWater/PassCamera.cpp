@@ -8,7 +8,6 @@ namespace {
 const char* const kWaterPassKey = "osgWater.pass"; // user value: the PassId of a water's pass camera
 }
 
-
 PassCamera::PassCamera(osg::Group* scene, std::initializer_list<osg::StateSet*> sceneStates, int width, int height,
                        PassId pass)
     : _pass(pass), _size(width), _keepPlane(0.0, 0.0, 1.0, 0.0)

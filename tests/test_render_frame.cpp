@@ -110,7 +110,8 @@ TEST(RenderFrame, UnderWaterChildrenAreLitTheSameWithTheSurfaceInViewAndOutOfVie
     auto centre = [&](double fovy) {
         h.lookAt(eye, shelf, fovy);
         h.frame(1.0);
-        const float* p = pixel(h.readColor().get(), h.width() / 2, h.height() / 2);
+        osg::ref_ptr<osg::Image> img = h.readColor(); // held: the pixel points into it
+        const float* p = pixel(img.get(), h.width() / 2, h.height() / 2);
         return osg::Vec3(p[0], p[1], p[2]);
     };
     const osg::Vec3 narrow = centre(20.0); // top edge 6.7 degrees below the horizontal
