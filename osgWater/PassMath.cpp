@@ -29,12 +29,19 @@ osg::Matrixd withNearFar(const osg::Matrixd& projection, double zNear, double zF
     return projection;
 }
 
+osg::Vec3d axisScales(const osg::Matrixd& view)
+{
+    // the view's rotation keeps lengths: the local axes' lengths in eye space are the scales
+    return osg::Vec3d(osg::Vec3d(view(0, 0), view(0, 1), view(0, 2)).length(),
+                      osg::Vec3d(view(1, 0), view(1, 1), view(1, 2)).length(),
+                      osg::Vec3d(view(2, 0), view(2, 1), view(2, 2)).length());
+}
+
 double localLengthPerEyeLength(const osg::Matrixd& view)
 {
-    // the cube root of the volume scale: exact for a uniform scale, a fair mean otherwise
-    const osg::Vec3d x(view(0, 0), view(0, 1), view(0, 2)), y(view(1, 0), view(1, 1), view(1, 2)),
-        z(view(2, 0), view(2, 1), view(2, 2));
-    const double volume = std::fabs((x ^ y) * z);
+    // the geometric mean of the axes' scales: exact for a uniform scale, a fair mean otherwise
+    const osg::Vec3d s = axisScales(view);
+    const double volume = s.x() * s.y() * s.z();
     return volume > 0.0 && std::isfinite(volume) ? 1.0 / std::cbrt(volume) : 1.0;
 }
 

@@ -152,6 +152,7 @@ double WaterNode::getSurfaceHeightAt(double x, double y, osg::Vec3d* normal) con
 
 double WaterNode::getSurfaceHeightAt(double x, double y, double t, osg::Vec3d* normal) const
 {
+    // a grid follows the waves; a user mesh is drawn as it is, about the level
     const bool grid = _surface->usesGrid();
     if (normal) *normal = grid ? _surface->normal(x, y, t) : osg::Vec3d(0.0, 0.0, 1.0);
     return grid ? _surface->height(x, y, t) : _surface->getLevel();
@@ -159,9 +160,7 @@ double WaterNode::getSurfaceHeightAt(double x, double y, double t, osg::Vec3d* n
 
 double WaterNode::eyeHeightAboveSurface(const osg::Vec3d& eye, double t) const
 {
-    // a grid follows the waves; a user mesh is drawn as it is, about the level
-    const double h = _surface->usesGrid() ? _surface->height(eye.x(), eye.y(), t) : _surface->getLevel();
-    return eye.z() - h;
+    return eye.z() - getSurfaceHeightAt(eye.x(), eye.y(), t);
 }
 
 void WaterNode::cull(osgUtil::CullVisitor& cv)
@@ -203,13 +202,8 @@ void WaterNode::cull(osgUtil::CullVisitor& cv)
 
 void WaterNode::warnIfScaledUnevenly(const osg::Matrixd& view)
 {
-    // the view's rotation keeps lengths: the local axes' lengths in eye space are the scales
-    double lo = 1e300, hi = 0.0;
-    for (int i = 0; i < 3; ++i) {
-        const double l = osg::Vec3d(view(i, 0), view(i, 1), view(i, 2)).length();
-        lo = std::min(lo, l);
-        hi = std::max(hi, l);
-    }
+    const osg::Vec3d s = axisScales(view);
+    const double lo = std::min(s.x(), std::min(s.y(), s.z())), hi = std::max(s.x(), std::max(s.y(), s.z()));
     if (hi <= lo * 1.001 || _warnedUnevenScale.exchange(true)) return;
     OSG_WARN << "osgWater: WaterNode \"" << getName() << "\" is under a non-uniform scale (" << lo << " to " << hi
              << "): light fades over distances in its local frame, and the sun's direction is bent" << std::endl;
