@@ -169,13 +169,17 @@ osg::Vec3 WaterSettings::getViewExtinction() const
     return _absorption + _scattering;
 }
 
+osg::Vec3 WaterSettings::effectiveBackscattering() const
+{
+    // backscattering beyond the scattering is not light the water can send back: at most b counts
+    return osg::Vec3(std::min(_backscattering.x(), _scattering.x()), std::min(_backscattering.y(), _scattering.y()),
+                     std::min(_backscattering.z(), _scattering.z()));
+}
+
 osg::Vec3 WaterSettings::getSunExtinction() const
 {
     if (_waterModel == WATER_THESIS) return osg::Vec3(_attenuation, _attenuation, _attenuation);
-    // backscattering beyond the scattering is not light the water can send back: at most b counts
-    osg::Vec3 r;
-    for (int i = 0; i < 3; ++i) r[i] = _absorption[i] + std::min(_backscattering[i], _scattering[i]);
-    return r;
+    return _absorption + effectiveBackscattering();
 }
 
 osg::Vec3 WaterSettings::getBodyColor() const
@@ -185,8 +189,7 @@ osg::Vec3 WaterSettings::getBodyColor() const
     const osg::Vec3 light = _sunColor * std::max(_sunDirection.z(), 0.0f) + _ambientColor;
     osg::Vec3 r;
     for (int i = 0; i < 3; ++i)
-        r[i] = std::min(1.0f, light[i] * optics::deepWaterReflectance(_absorption[i],
-                                                                       std::min(_backscattering[i], _scattering[i])));
+        r[i] = std::min(1.0f, light[i] * optics::deepWaterReflectance(_absorption[i], effectiveBackscattering()[i]));
     return r;
 }
 
