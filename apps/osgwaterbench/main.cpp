@@ -104,9 +104,6 @@ Summary summarize(const std::string& name, const std::vector<Record>& records, s
     return s;
 }
 
-}
-
-
 // WaterNode::getSurfaceHeightAt with the normal, on one thread: a grid of points over the surface's
 // box visited `n` times in all (the median of five such runs)
 double heightQueriesPerSecond(const osgWater::WaterNode& water, int n)
@@ -125,8 +122,9 @@ double heightQueriesPerSecond(const osgWater::WaterNode& water, int n)
         rates.push_back(n / std::max(osg::Timer::instance()->delta_s(start, osg::Timer::instance()->tick()), 1e-9));
     }
     if (!std::isfinite(sink)) std::cout << "height queries gave a non-finite value" << std::endl;
-    std::sort(rates.begin(), rates.end());
-    return rates[rates.size() / 2];
+    return osgWaterApps::median(rates);
+}
+
 }
 
 int main(int argc, char** argv)
