@@ -1,4 +1,5 @@
 #include <osgWater/PassMath>
+#include <limits>
 #include <osg/Quat>
 #include <algorithm>
 #include <cmath>
@@ -165,6 +166,27 @@ bool boxInsidePlanes(const osg::BoundingBox& box, const std::vector<osg::Plane>&
     }
     // the frustum wholly inside the box (no corner in it, no face crossing it): its apex is inside
     return false;
+}
+
+bool nearPlaneReachesWater(const osg::Matrixd& modelView, const osg::Matrixd& projection, double level, double waveBound)
+{
+    const double top = level + waveBound, bottom = level - waveBound;
+    const double eyeZ = eyePosition(modelView).z();
+    if (!std::isfinite(eyeZ) || (eyeZ <= top && eyeZ >= bottom)) return true; // in the band: anything goes
+    osg::Matrixd clipToLocal;
+    if (!clipToLocal.invert(modelView * projection)) return true;
+    // the near plane is a flat rectangle: its height range is its corners'
+    double lo = std::numeric_limits<double>::max(), hi = -lo;
+    for (double x : { -1.0, 1.0 })
+        for (double y : { -1.0, 1.0 }) {
+            const osg::Vec4d c = osg::Vec4d(x, y, -1.0, 1.0) * clipToLocal;
+            if (!(std::abs(c.w()) > 1e-300)) return true;
+            const double z = c.z() / c.w();
+            if (!std::isfinite(z)) return true;
+            lo = std::min(lo, z);
+            hi = std::max(hi, z);
+        }
+    return eyeZ > top ? lo <= top : hi >= bottom;
 }
 
 }

@@ -2,10 +2,31 @@
 #include <osgWater/ScreenTriangle>
 #include <osgWater/Shaders>
 #include <osgWater/PassTable>
+#include <osgWater/PassMath>
 #include <osg/Depth>
 #include <osg/CullFace>
 
 using namespace osgWater;
+
+// At draw time the projection holds the near plane OSG computed for this frame: a cap whose near
+// plane cannot reach the water would run its full-screen shader only to discard every pixel.
+class UnderwaterView::CapSkip : public osg::Drawable::DrawCallback
+{
+public:
+    explicit CapSkip(const UnderwaterView* owner) : _owner(owner) {}
+    void drawImplementation(osg::RenderInfo& ri, const osg::Drawable* drawable) const override
+    {
+        const osg::State& state = *ri.getState();
+        if (_owner->capNeeded(state.getModelViewMatrix(), state.getProjectionMatrix())) {
+            ++_owner->_capDraws;
+            drawable->drawImplementation(ri);
+        } else {
+            ++_owner->_capSkips;
+        }
+    }
+private:
+    const UnderwaterView* _owner; // owns the cap, so outlives it
+};
 
 UnderwaterView::UnderwaterView()
 {
@@ -16,6 +37,7 @@ UnderwaterView::UnderwaterView()
     cap->setAttributeAndModes(new osg::Depth(osg::Depth::ALWAYS, 0.0, 1.0, false));
     cap->setMode(GL_CULL_FACE, osg::StateAttribute::OFF);
     cap->setRenderBinDetails(renderBin(PASS_CAP), "RenderBin");
+    _cap->getDrawable(0)->setDrawCallback(new CapSkip(this));
 
     // at the far plane, only where nothing was drawn (depth still clear)
     // (just inside the far plane: a fragment exactly on it may be clipped)
@@ -25,6 +47,17 @@ UnderwaterView::UnderwaterView()
     bd->setAttributeAndModes(new osg::Depth(osg::Depth::LEQUAL, 0.0, 1.0, false));
     bd->setMode(GL_CULL_FACE, osg::StateAttribute::OFF);
     bd->setRenderBinDetails(renderBin(PASS_BACKDROP), "RenderBin");
+}
+
+void UnderwaterView::setWaveBand(double level, double waveBound)
+{
+    _level = level;
+    _waveBound = waveBound;
+}
+
+bool UnderwaterView::capNeeded(const osg::Matrixd& modelView, const osg::Matrixd& projection) const
+{
+    return !_skipping || nearPlaneReachesWater(modelView, projection, _level, _waveBound);
 }
 
 void UnderwaterView::resizeGLObjectBuffers(unsigned int maxSize)

@@ -29,6 +29,7 @@ WaterNode::WaterNode(const WaterNode& o, const osg::CopyOp& copyop)
 {
     setNumChildrenRequiringUpdateTraversal(getNumChildrenRequiringUpdateTraversal() + 1);
     _underwater = new UnderwaterView;
+    setSkippingEnabled(o._skipping);
     refreshStates();
 }
 
@@ -52,6 +53,12 @@ void WaterNode::setDebugOutput(DebugOutput d)
     refreshStates();
 }
 
+void WaterNode::setSkippingEnabled(bool on)
+{
+    _skipping = on;
+    _underwater->setCapSkipping(on);
+}
+
 void WaterNode::refreshStates()
 {
     if (_appliedSettings == _settings.get() && _settingsRevision == _settings->getRevision()
@@ -59,6 +66,7 @@ void WaterNode::refreshStates()
         return;
     if (_appliedSurface != _surface.get() || _surfaceRevision != _surface->getRevision()) dirtyBound();
     _states.applySettings(*_settings, *_surface, _debug);
+    _underwater->setWaveBand(_surface->getLevel(), _surface->usesGrid() ? _surface->getMaxAmplitude() : 0.0);
     _appliedSettings = _settings.get();
     _appliedSurface = _surface.get();
     _settingsRevision = _settings->getRevision();

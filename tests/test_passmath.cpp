@@ -237,3 +237,26 @@ TEST(PassMath, WaterBoxOutOfViewWhenLookingAtTheSkyFromTheShore)
     EXPECT_TRUE(boxInsidePlanes(lake, frustumPlanes(osg::Vec3d(0, 0, 10), osg::Vec3d(0, 0, -10) + osg::Vec3d(0, 1e-3, 0), 1.0)));
     EXPECT_FALSE(boxInsidePlanes(osg::BoundingBox(), frustumPlanes(eye, osg::Vec3d(0, 0, -3), 1.0)));
 }
+
+TEST(PassMath, NearPlaneReachesTheWaterOnlyWhenItCrossesTheWaveBand)
+{
+    // 60 degree field of view, near 0.5: the near rectangle reaches 0.29 m above and below the eye's
+    // line of sight when looking horizontally
+    const osg::Matrixd proj = osg::Matrixd::perspective(60.0, 1.0, 0.5, 100.0);
+    const double level = 0.0, band = 0.1;
+    // 2 m above the water, looking down at 45 degrees: the near plane stays 1.5 m above the crests
+    EXPECT_FALSE(nearPlaneReachesWater(lookAt({ 0, 0, 2 }, { 0, 10, -8 }), proj, level, band));
+    // 0.3 m above, looking horizontally: its lower edge dips to 0.01 m, below the crests at 0.1 m
+    EXPECT_TRUE(nearPlaneReachesWater(lookAt({ 0, 0, 0.3 }, { 0, 10, 0.3 }), proj, level, band));
+    // 0.5 m above, looking horizontally: the lower edge at 0.21 m stays above the crests
+    EXPECT_FALSE(nearPlaneReachesWater(lookAt({ 0, 0, 0.5 }, { 0, 10, 0.5 }), proj, level, band));
+    // looking straight down from 0.55 m: the near plane at 0.05 m, below the crests
+    EXPECT_TRUE(nearPlaneReachesWater(osg::Matrixd::lookAt(osg::Vec3d(0, 0, 0.55), osg::Vec3d(0, 0, -1), osg::Vec3d(0, 1, 0)), proj, level, band));
+    // under water: 3 m down looking up at 45 degrees stays below the troughs; 0.3 m down does not
+    EXPECT_FALSE(nearPlaneReachesWater(lookAt({ 0, 0, -3 }, { 0, 10, 7 }), proj, level, band));
+    EXPECT_TRUE(nearPlaneReachesWater(lookAt({ 0, 0, -0.3 }, { 0, 10, -0.3 }), proj, level, band));
+    // the eye within the wave band: anything goes
+    EXPECT_TRUE(nearPlaneReachesWater(lookAt({ 0, 0, 0.05 }, { 0, 10, 5 }), proj, level, band));
+    // a raised level counts: 2 m above z = 0 is 0.2 m above water at level 1.8
+    EXPECT_TRUE(nearPlaneReachesWater(lookAt({ 0, 0, 2 }, { 0, 10, 2 }), proj, 1.8, band));
+}

@@ -1,0 +1,71 @@
+// Work the frame skips because it cannot change the image: each skip is checked twice, that the
+// pass did not run, and that the image equals (within 1/255) the frame with skipping off, where
+// every planned pass runs in full.
+#include "GLHarness.h"
+#include <osgWater/WaterNode>
+#include <algorithm>
+#include <cmath>
+
+using namespace testing_gl;
+using namespace osgWater;
+
+namespace {
+
+// the largest channel difference over two read-back images of the same size
+float largestDifference(const osg::Image* a, const osg::Image* b)
+{
+    float d = 0.0f;
+    for (int y = 0; y < a->t(); ++y)
+        for (int x = 0; x < a->s(); ++x)
+            for (int c = 0; c < 3; ++c) d = std::max(d, std::abs(pixel(a, x, y)[c] - pixel(b, x, y)[c]));
+    return d;
+}
+
+osg::ref_ptr<WaterNode> wavyLake()
+{
+    osg::ref_ptr<WaterNode> water = new WaterNode;
+    water->getSurface()->setWaves({ makeWave(1.0f, 0.3f, 6.0f, 0.1f), makeWave(-0.4f, 1.0f, 3.5f, 0.05f) });
+    water->getSurface()->setSize(200.0f);
+    water->getSettings()->setGlowEnabled(false);
+    water->getSettings()->setCausticsEnabled(false);
+    water->addChild(checkerPlane(-2.0f, 200.0f, 1.0f));
+    return water;
+}
+
+struct SkipFrames { osg::ref_ptr<osg::Image> full, skipped; };
+
+// the same frame with skipping off, then on
+SkipFrames renderBothWays(Harness& h, WaterNode* water, double t)
+{
+    SkipFrames f;
+    water->setSkippingEnabled(false);
+    h.frame(t);
+    f.full = h.readColor();
+    water->setSkippingEnabled(true);
+    h.frame(t);
+    f.skipped = h.readColor();
+    return f;
+}
+
+}
+
+TEST(Skips, TheCapIsNotDrawnWhenTheNearPlaneCannotReachTheWater)
+{
+    Harness h(160, 120);
+    REQUIRE_GL(h);
+    osg::ref_ptr<WaterNode> water = wavyLake();
+    h.setScene(water.get());
+    h.lookAt(osg::Vec3d(0, 0, 3), osg::Vec3d(0, 10, 0));
+    const UnderwaterView* uv = water->getUnderwaterView();
+    const unsigned drawsBefore = uv->getCapDraws(), skipsBefore = uv->getCapSkips();
+    const SkipFrames f = renderBothWays(h, water.get(), 1.0);
+    EXPECT_EQ(uv->getCapDraws(), drawsBefore + 1) << "skipping off: the planned cap is drawn";
+    EXPECT_EQ(uv->getCapSkips(), skipsBefore + 1) << "3 m above the crests the near plane cannot reach them";
+    EXPECT_LE(largestDifference(f.full.get(), f.skipped.get()), 1.0f / 255.0f);
+
+    // an eye among the crests: the near plane reaches the water, the cap is drawn
+    h.lookAt(osg::Vec3d(0, 0, 0.02), osg::Vec3d(0, 10, 0.02));
+    const unsigned draws = uv->getCapDraws();
+    h.frame(1.0);
+    EXPECT_EQ(uv->getCapDraws(), draws + 1);
+}
