@@ -38,7 +38,9 @@ void osgWater::applySceneLighting(osg::StateSet* ss, const SceneLighting& l, con
     }
 
     const CausticsLighting* c = l.caustics;
-    setUniform(ss, "osgWater_Caustics", c ? osg::Vec2f(1.0f, c->intensity) : osg::Vec2f(0.0f, 0.0f));
+    // a pass without caustics compiles none of their fetches
+    setDefineIf(ss, "OSGWATER_CAUSTICS", c != nullptr);
+    setUniform(ss, "osgWater_CausticsIntensity", c ? c->intensity : 0.0f);
     setUniform(ss, "osgWater_EyeToSun", c ? osg::Matrixf(osg::Matrixd::inverse(view) * c->localToSun) : osg::Matrixf());
     setUniform(ss, "osgWater_SunDepthBias", c ? c->depthBias : osg::Vec2f(0.0f, 0.0f));
     setUniform(ss, "osgWater_CausticsChannels", c ? c->channelExtinction : osg::Vec3f());

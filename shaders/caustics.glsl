@@ -1,7 +1,8 @@
 // Caustics applied like a shadow map (thesis §9.2): the fragment's position in the sun camera's
 // texture space indexes the caustics texture (power per unit area seen from the sun, in units of
-// the sun's irradiance) and the sun's depth map (shadows).
-uniform vec2 osgWater_Caustics;          // (1 if caustics apply in this pass, intensity)
+// the sun's irradiance) and the sun's depth map (shadows). Included only by passes that have
+// caustics (OSGWATER_CAUSTICS).
+uniform float osgWater_CausticsIntensity;
 uniform sampler2D osgWater_CausticsTex;  // unit 4
 uniform sampler2D osgWater_SunDepth;     // unit 5
 uniform vec2 osgWater_SunDepthBias;      // depth bias: constant + per unit of slope tangent
@@ -16,15 +17,15 @@ in float vAboveWater;
 // sun's path down to this depth.
 vec3 owUnderwaterSun(float ndl)
 {
-    if (osgWater_Caustics.x < 0.5 || vAboveWater >= 0.0) return vec3(1.0);
+    if (vAboveWater >= 0.0) return vec3(1.0);
     if (any(lessThan(vSun.xy, vec2(0.0))) || any(greaterThan(vSun.xy, vec2(1.0)))) return vec3(1.0);
     float tanSlope = sqrt(max(1.0 - ndl * ndl, 0.0)) / max(ndl, 0.1);
     float bias = osgWater_SunDepthBias.x + osgWater_SunDepthBias.y * tanSlope;
     if (vSun.z > texture(osgWater_SunDepth, vSun.xy).r + bias) return vec3(0.0);
 #ifdef OSGWATER_CAUSTICS_CHANNELS
-    return osgWater_Caustics.y * texture(osgWater_CausticsTex, vSun.xy).r
+    return osgWater_CausticsIntensity * texture(osgWater_CausticsTex, vSun.xy).r
          * exp(osgWater_CausticsChannels * vAboveWater);
 #else
-    return vec3(osgWater_Caustics.y * texture(osgWater_CausticsTex, vSun.xy).r);
+    return vec3(osgWater_CausticsIntensity * texture(osgWater_CausticsTex, vSun.xy).r);
 #endif
 }

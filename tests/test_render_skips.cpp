@@ -69,3 +69,33 @@ TEST(Skips, TheCapIsNotDrawnWhenTheNearPlaneCannotReachTheWater)
     h.frame(1.0);
     EXPECT_EQ(uv->getCapDraws(), draws + 1);
 }
+
+TEST(Skips, APassCompilesCausticsAndFogOnlyWhereTheyCanChangeItsPixels)
+{
+    Harness h(160, 120);
+    REQUIRE_GL(h);
+    osg::ref_ptr<WaterNode> water = wavyLake();
+    water->getSettings()->setCausticsEnabled(true);
+    h.setScene(water.get());
+    auto has = [](osg::Camera* c, const char* define) { return c->getStateSet()->getDefinePair(define) != nullptr; };
+
+    // from above: the reflection keeps the air (no caustics, no fog), the refraction the water
+    // below, which the water shader itself fades (caustics, no fog)
+    h.lookAt(osg::Vec3d(0, 0, 3), osg::Vec3d(0, 10, -1));
+    h.frame(1.0);
+    ViewPasses* p = water->getViewPasses(h.camera());
+    ASSERT_TRUE(p);
+    ASSERT_TRUE(water->getCausticsCamera()) << "the sun is up and a bed lies under the water";
+    EXPECT_FALSE(has(p->getReflectionCamera(), "OSGWATER_CAUSTICS"));
+    EXPECT_FALSE(has(p->getReflectionCamera(), "OSGWATER_FOG"));
+    EXPECT_TRUE(has(p->getRefractionCamera(), "OSGWATER_CAUSTICS"));
+    EXPECT_FALSE(has(p->getRefractionCamera(), "OSGWATER_FOG"));
+
+    // from below: the reflection shows the water through water, the refraction the air
+    h.lookAt(osg::Vec3d(0, 0, -1), osg::Vec3d(0, 10, 1));
+    h.frame(1.0);
+    EXPECT_TRUE(has(p->getReflectionCamera(), "OSGWATER_CAUSTICS"));
+    EXPECT_TRUE(has(p->getReflectionCamera(), "OSGWATER_FOG"));
+    EXPECT_FALSE(has(p->getRefractionCamera(), "OSGWATER_CAUSTICS"));
+    EXPECT_FALSE(has(p->getRefractionCamera(), "OSGWATER_FOG"));
+}
