@@ -8,6 +8,7 @@
 #include <OpenThreads/ScopedLock>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 using namespace osgWater;
 
@@ -100,6 +101,9 @@ void WaterNode::releaseGLObjects(osg::State* state) const
     _views.releaseGLObjects(state);
     OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_causticsMutex);
     if (_caustics.valid()) _caustics->releaseGLObjects(state);
+    // released caustics hold nothing any more: the next frame renders them again
+    if (state) _causticsRendered.erase(state->getContextID());
+    else _causticsRendered.clear();
 }
 
 void WaterNode::traverse(osg::NodeVisitor& nv)
@@ -238,6 +242,7 @@ WaterNode::ViewFrame WaterNode::gatherFacts(osgUtil::CullVisitor& cv)
     v.frameNumber = cv.getFrameStamp() ? cv.getFrameStamp()->getFrameNumber() : 0u;
     v.support = support(v.contextID);
     const double t = cv.getFrameStamp() ? cv.getFrameStamp()->getSimulationTime() : 0.0;
+    v.time = t;
 
     // the view, in the water's local frame
     PassContext& ctx = v.ctx;
@@ -274,9 +279,16 @@ WaterNode::ViewFrame WaterNode::gatherFacts(osgUtil::CullVisitor& cv)
 ViewPasses* WaterNode::viewPasses(osgUtil::CullVisitor& cv, const ViewFrame& v)
 {
     const WaterSettings& s = *_settings;
+    // the targets: the fixed square sizes, or a fraction of this view's viewport
+    const osg::Viewport* vp = cv.getViewport();
+    auto target = [&](const char* what, int fixedSize) {
+        const osg::Vec2i size = passTargetSize(vp ? vp->width() : 0.0, vp ? vp->height() : 0.0, s.getPassTargetScale(),
+                                               fixedSize);
+        return osg::Vec2i(fitTexture(what, size.x(), v.support), fitTexture(what, size.y(), v.support));
+    };
     ViewPasses* passes = _views.get(cv.getCurrentCamera(), this, _states.getSceneStateSet(), _states.getWaterStateSet(),
-                                    fitTexture("reflectionTextureSize", s.getReflectionTextureSize(), v.support),
-                                    fitTexture("refractionTextureSize", s.getRefractionTextureSize(), v.support));
+                                    target("reflection target", s.getReflectionTextureSize()),
+                                    target("refraction target", s.getRefractionTextureSize()));
     passes->setTimingEnabled(_passTiming);
     return passes;
 }
@@ -396,21 +408,55 @@ void WaterNode::prepareCaustics(ViewFrame& v)
                 _caustics = new CausticsCamera(this, _states.getSceneStateSet(), _states.getWaterStateSet(),
                                                resolution, grid, v.support.floatTargets);
             _caustics->update(f);
+            const CausticsAim key{ _caustics.get(), _settings.get(), _surface.get(), _settings->getRevision(),
+                                   _surface->getRevision(), _caustics->getDepthVersion() };
+            if (key != _causticsAimKey) {
+                _causticsAimKey = key;
+                ++_causticsAim;
+            }
         }
     }
     if (!_causticsNeeded || !_caustics.valid()) return;
     v.facts.caustics = true;
-    auto done = _causticsFrame.find(v.contextID);
-    v.facts.causticsDone = done != _causticsFrame.end() && done->second == v.frameNumber;
+    auto done = _causticsRendered.find(v.contextID);
+    v.facts.causticsDone = done != _causticsRendered.end() &&
+                           (done->second.frame == v.frameNumber ||
+                            (_skipping && causticsStillHold(done->second.aim, done->second.time, v.time)));
     v.facts.sunDepthStale = _caustics->depthStale(v.contextID);
+}
+
+bool WaterNode::causticsStillHold(unsigned int aim, double renderedAt, double t) const
+{
+    // the automatic gather times its candidates on frames that render caustics: every frame until it chose
+    const bool choosing = _settings->getCausticsGather() == WaterSettings::GATHER_AUTO && !_caustics->isAutoGatherSettled();
+    return aim == _causticsAim && !choosing && (t == renderedAt || std::abs(t - renderedAt) <= causticsHoldTime());
+}
+
+double WaterNode::causticsHoldTime() const
+{
+    if (!_caustics.valid() || !_skipping) return 0.0;
+    // the pattern is a sum of the waves' patterns, each travelling at its phase speed
+    const osg::Vec3d& window = _caustics->getWindow();
+    const double texel = std::max(window.x(), window.y()) / std::max(1, _caustics->getResolution());
+    const double speed = _surface->getMaxPhaseSpeed();
+    if (speed == 0.0) return std::numeric_limits<double>::infinity();
+    return _settings->getCausticsMotionTolerance() * texel / speed;
+}
+
+double WaterNode::getCausticsHoldTime() const
+{
+    OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_causticsMutex);
+    return causticsHoldTime();
 }
 
 bool WaterNode::claimCaustics(const ViewFrame& v, const PassPlan& plan)
 {
     OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_causticsMutex);
-    auto done = _causticsFrame.find(v.contextID);
-    if (done != _causticsFrame.end() && done->second == v.frameNumber) return false;
-    _causticsFrame[v.contextID] = v.frameNumber;
+    CausticsRendered& last = _causticsRendered[v.contextID];
+    if (last.frame == v.frameNumber) return false;
+    last.frame = v.frameNumber;
+    last.aim = _causticsAim;
+    last.time = v.time;
     if (plan.runs(PASS_SUN_DEPTH)) _caustics->markDepthDrawn(v.contextID);
     if (_gatherResolved != v.frameNumber) { // the gather follows frames that render caustics
         _gatherResolved = v.frameNumber;

@@ -147,6 +147,15 @@ void WaterSurface::setMesh(osg::Geometry* mesh)
     rebuild();
 }
 
+double WaterSurface::getMaxPhaseSpeed() const
+{
+    double c = 0.0;
+    if (usesGrid())
+        for (const Wave& w : _waves)
+            if (w.amplitude > 0.0f) c = std::max(c, w.angularFrequency() / w.wavenumber());
+    return c;
+}
+
 float WaterSurface::getMaxAmplitude() const
 {
     if (_userMesh.valid()) {

@@ -99,3 +99,51 @@ TEST(Skips, APassCompilesCausticsAndFogOnlyWhereTheyCanChangeItsPixels)
     EXPECT_FALSE(has(p->getRefractionCamera(), "OSGWATER_CAUSTICS"));
     EXPECT_FALSE(has(p->getRefractionCamera(), "OSGWATER_FOG"));
 }
+
+TEST(Skips, CausticsAreReusedUntilTheWavesCanHaveMovedThem)
+{
+    Harness h(160, 120);
+    REQUIRE_GL(h);
+    osg::ref_ptr<WaterNode> water = wavyLake();
+    WaterSettings* s = water->getSettings();
+    s->setCausticsEnabled(true);
+    s->setCausticsGather(WaterSettings::GATHER_CPU); // every context has it: no automatic choice to wait for
+    s->setAttenuation(0.05f);
+    // a lit bed, which the caustics light
+    water->replaceChild(water->getChild(0), litQuad(osg::Vec3(-20, -20, -2), osg::Vec3(20, -20, -2),
+                                                    osg::Vec3(20, 20, -2), osg::Vec3(-20, 20, -2)));
+    h.setScene(water.get());
+    h.lookAt(osg::Vec3d(0, -1, 4), osg::Vec3d(0, 0, -2));
+    auto rendered = [&] { return water->getViewPasses(h.camera())->getPlan().runs(PASS_PHOTONS); };
+
+    // the surface where it was: the caustics of the last frame are the caustics of this one
+    const SkipFrames f = renderBothWays(h, water.get(), 1.0);
+    EXPECT_FALSE(rendered()) << "the same time, the same waves, the same sun";
+    EXPECT_LE(largestDifference(f.full.get(), f.skipped.get()), 1.0f / 255.0f);
+
+    // waves moving: reused within the hold time, rendered again after it
+    const double hold = water->getCausticsHoldTime();
+    ASSERT_GT(hold, 0.0);
+    ASSERT_TRUE(std::isfinite(hold));
+    // half a texel (the default tolerance) at the fastest wave's phase speed
+    const osg::Vec3d& window = water->getCausticsCamera()->getWindow();
+    const double texel = std::max(window.x(), window.y()) / water->getCausticsCamera()->getResolution();
+    EXPECT_NEAR(hold, 0.5 * texel / water->getSurface()->getMaxPhaseSpeed(), 1e-9);
+    h.frame(1.0 + 0.9 * hold);
+    EXPECT_FALSE(rendered());
+    h.frame(1.0 + 1.1 * hold);
+    EXPECT_TRUE(rendered());
+
+    // anything else they depend on: rendered again at once
+    s->setSunDirection(osg::Vec3(0.2f, 0.1f, 0.97f));
+    h.frame(1.0 + 1.1 * hold);
+    EXPECT_TRUE(rendered()) << "the sun moved";
+
+    // still water: kept however much time passes
+    water->getSurface()->setWaves({});
+    h.frame(5.0);
+    EXPECT_TRUE(rendered()) << "the waves changed";
+    EXPECT_TRUE(std::isinf(water->getCausticsHoldTime()));
+    h.frame(50.0);
+    EXPECT_FALSE(rendered());
+}

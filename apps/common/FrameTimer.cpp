@@ -47,6 +47,18 @@ double median(std::vector<double> v)
     return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
+double medianOfBlockMeans(const std::vector<double>& ms, size_t block)
+{
+    block = std::max<size_t>(block, 1);
+    std::vector<double> means;
+    for (size_t i = 0; i + block <= ms.size(); i += block) {
+        double sum = 0.0;
+        for (size_t j = i; j < i + block; ++j) sum += ms[j];
+        means.push_back(sum / double(block));
+    }
+    return means.empty() ? median(ms) : median(means);
+}
+
 osg::ref_ptr<osg::GraphicsContext> createPbuffer(int width, int height)
 {
     osg::ref_ptr<osg::GraphicsContext::Traits> traits = new osg::GraphicsContext::Traits;

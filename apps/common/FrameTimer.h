@@ -21,6 +21,10 @@ osg::ref_ptr<osg::Image> captureFrame(osgViewer::Viewer& viewer, double t);
 //! (Windows use osgViewer::ScreenCaptureHandler instead.)
 
 double median(std::vector<double> v);
+//! The median over consecutive blocks of `block` frame times of each block's mean: work done every
+//! few frames (caustics rendered again only when the waves moved them) counts at its average cost,
+//! which a median of single frames would hide, while a slow block still cannot sway the result.
+double medianOfBlockMeans(const std::vector<double>& ms, size_t block);
 
 //! A pbuffer context of this size (needs an X display: Xvfb on a headless machine), or nullptr.
 osg::ref_ptr<osg::GraphicsContext> createPbuffer(int width, int height);

@@ -153,7 +153,8 @@ bool writeDocs(const std::string& dir, const RunInfo& info, const std::vector<Re
        << "- Command: `" << info.command << "`\n"
        << "- Date: " << info.date << "; renderer: " << info.renderer << "; " << info.cpus << " CPU threads\n"
        << "- Scene `" << info.scene << "`, views `" << info.viewsFile << "`, " << info.width << "×" << info.height
-       << ", frame time = median of " << info.frames << " frames after warm-up, plain scene (water removed) timed "
+       << ", frame time = median over blocks of 5 of the block's mean, " << info.frames << " frames after warm-up (work "
+       << "done every few frames counts at its average), plain scene (water removed) timed "
        << "in the same run just before and after each technique (ratio = frame / plain)\n"
        << "- Reference: Embree ray casting over the triangles the GPU draws at the view's time; caustics by "
        << info.photons << " photons traced from the sun\n"

@@ -31,6 +31,9 @@ using namespace bench;
 
 namespace {
 
+// frame times are means over blocks of this many frames (then the median over blocks)
+const size_t kTimingBlock = 5;
+
 // Loads an .osgt with a WaterNode, or any model with water added at z = 0 over its extent.
 osg::ref_ptr<osgWater::WaterNode> loadScene(const std::string& file, osg::ref_ptr<osg::Node>& root)
 {
@@ -250,8 +253,8 @@ int main(int argc, char** argv)
             const std::vector<double> after = timeFrames(timing, tt, 2, plainFrames);
             plainMs.insert(plainMs.end(), after.begin(), after.end());
             scenes->setSingleChildOn(0);
-            r.frameMs = osgWaterApps::median(waterMs);
-            r.plainMs = osgWaterApps::median(plainMs);
+            r.frameMs = osgWaterApps::medianOfBlockMeans(waterMs, kTimingBlock);
+            r.plainMs = osgWaterApps::medianOfBlockMeans(plainMs, kTimingBlock);
             r.ratio = r.plainMs > 0.0 ? r.frameMs / r.plainMs : 0.0;
 
             const osg::Timer_t phase = osg::Timer::instance()->tick();

@@ -112,10 +112,11 @@ int runHeadless(osgViewer::Viewer& viewer, osg::Switch* scenes, osgWater::WaterN
     }
     std::cout << "screenshot: " << o.screenshot << std::endl;
     std::cout << "settings: " << describeSettings(*water->getSettings()) << ", caustics " << describeCaustics(*water) << std::endl;
-    const double first = osgWaterApps::median(configs[0].ms), last = osgWaterApps::median(configs.back().ms);
-    std::printf("median frame time over %d alternating blocks of %d frames:\n", blocks, perBlock);
+    auto frameMs = [&](const Configuration& c) { return osgWaterApps::medianOfBlockMeans(c.ms, size_t(perBlock)); };
+    const double first = frameMs(configs[0]), last = frameMs(configs.back());
+    std::printf("frame time, median over %d alternating blocks of the mean of %d frames:\n", blocks, perBlock);
     for (const Configuration& c : configs) {
-        const double m = osgWaterApps::median(c.ms);
+        const double m = frameMs(c);
         std::printf("  %-32s %8.2f ms", c.name.c_str(), m);
         if (o.compareCaustics) std::printf("   x%.3f of caustics off", first > 0 ? m / first : 0.0);
         else if (o.compareGlow) std::printf("   x%.3f of glow off", first > 0 ? m / first : 0.0);
