@@ -10,7 +10,7 @@ const char* const kWaterPassKey = "osgWater.pass"; // user value: the PassId of 
 
 PassCamera::PassCamera(osg::Group* scene, std::initializer_list<osg::StateSet*> sceneStates, int width, int height,
                        PassId pass)
-    : _pass(pass), _size(width), _keepPlane(0.0, 0.0, 1.0, 0.0)
+    : _pass(pass), _width(width), _height(height), _keepPlane(0.0, 0.0, 1.0, 0.0)
 {
     setUpPassTarget(this, width, height, pass);
     _draw = new DrawNodes;
@@ -23,7 +23,7 @@ PassCamera::PassCamera(osg::Group* scene, std::initializer_list<osg::StateSet*> 
 
 void PassCamera::attachColorTexture()
 {
-    _color = makeTargetTexture(_size, GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE, true);
+    _color = makeTargetTexture(_width, _height, GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE, true);
     _color->setName("osgWater.passColor");
     attach(osg::Camera::COLOR_BUFFER, _color.get());
 }

@@ -168,6 +168,13 @@ bool boxInsidePlanes(const osg::BoundingBox& box, const std::vector<osg::Plane>&
     return false;
 }
 
+osg::Vec2i passTargetSize(double viewportWidth, double viewportHeight, double scale, int fixedSize)
+{
+    if (!(scale > 0.0) || !(viewportWidth >= 1.0) || !(viewportHeight >= 1.0)) return osg::Vec2i(fixedSize, fixedSize);
+    auto side = [scale](double v) { return int(std::lround(std::min(std::max(v * scale, 16.0), 4096.0))); };
+    return osg::Vec2i(side(viewportWidth), side(viewportHeight));
+}
+
 bool nearPlaneReachesWater(const osg::Matrixd& modelView, const osg::Matrixd& projection, double level, double waveBound)
 {
     const double top = level + waveBound, bottom = level - waveBound;

@@ -5,8 +5,8 @@
 
 using namespace osgWater;
 
-ReflectionCamera::ReflectionCamera(osg::Group* scene, osg::StateSet* sceneState, int textureSize)
-    : PassCamera(scene, { sceneState }, textureSize, textureSize, PASS_REFLECTION)
+ReflectionCamera::ReflectionCamera(osg::Group* scene, osg::StateSet* sceneState, int width, int height)
+    : PassCamera(scene, { sceneState }, width, height, PASS_REFLECTION)
 {
     setName("osgWater.ReflectionCamera");
     attachColorTexture();

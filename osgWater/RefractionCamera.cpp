@@ -5,12 +5,12 @@
 
 using namespace osgWater;
 
-RefractionCamera::RefractionCamera(osg::Group* scene, osg::StateSet* sceneState, int textureSize)
-    : PassCamera(scene, { sceneState }, textureSize, textureSize, PASS_REFRACTION)
+RefractionCamera::RefractionCamera(osg::Group* scene, osg::StateSet* sceneState, int width, int height)
+    : PassCamera(scene, { sceneState }, width, height, PASS_REFRACTION)
 {
     setName("osgWater.RefractionCamera");
     attachColorTexture();
-    _depth = makeTargetTexture(textureSize, GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT, GL_FLOAT, false);
+    _depth = makeTargetTexture(width, height, GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT, GL_FLOAT, false);
     _depth->setName("osgWater.refractionDepth");
     attach(osg::Camera::DEPTH_BUFFER, _depth.get());
     // thesis fig. 3: clipped solids must not show their insides

@@ -6,11 +6,11 @@
 using namespace osgWater;
 
 ViewPasses::ViewPasses(osg::Group* scene, osg::StateSet* sceneState, osg::StateSet* waterState, osg::StateSet* lighting,
-                       int reflectionSize, int refractionSize)
+                       const osg::Vec2i& reflectionSize, const osg::Vec2i& refractionSize)
     : _scene(scene), _sceneState(sceneState), _waterState(waterState), _lighting(lighting)
 {
-    _reflection = new ReflectionCamera(scene, sceneState, reflectionSize);
-    _refraction = new RefractionCamera(scene, sceneState, refractionSize);
+    _reflection = new ReflectionCamera(scene, sceneState, reflectionSize.x(), reflectionSize.y());
+    _refraction = new RefractionCamera(scene, sceneState, refractionSize.x(), refractionSize.y());
     _reflectionTimer = new GpuTimer;
     _refractionTimer = new GpuTimer;
     // changes every frame: OSG must not draw it while the next frame's cull writes
@@ -33,9 +33,12 @@ GlowPasses* ViewPasses::getOrCreateGlow(int width, int height, bool floatTargets
     return _glow.get();
 }
 
-bool ViewPasses::matchesSizes(int reflectionSize, int refractionSize) const
+bool ViewPasses::matchesSizes(const osg::Vec2i& reflectionSize, const osg::Vec2i& refractionSize) const
 {
-    return _reflection->getTextureSize() == reflectionSize && _refraction->getTextureSize() == refractionSize;
+    auto sized = [](const PassCamera* c, const osg::Vec2i& size) {
+        return c->getTargetWidth() == size.x() && c->getTargetHeight() == size.y();
+    };
+    return sized(_reflection.get(), reflectionSize) && sized(_refraction.get(), refractionSize);
 }
 
 void ViewPasses::setTimingEnabled(bool on)
@@ -132,7 +135,8 @@ osg::StateSet* ViewPassesMap::getLighting(osg::Camera* camera)
 }
 
 ViewPasses* ViewPassesMap::get(osg::Camera* camera, osg::Group* scene, osg::StateSet* sceneState,
-                               osg::StateSet* waterState, int reflectionSize, int refractionSize)
+                               osg::StateSet* waterState, const osg::Vec2i& reflectionSize,
+                               const osg::Vec2i& refractionSize)
 {
     OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_mutex);
     Entry& e = entry(camera);

@@ -46,7 +46,8 @@ WaterSettings::WaterSettings()
       _oneStepScale(1.0f), _oneStepMaxDepth(20.0f), _underwaterLookupScale(1.5f),
       _fovExtNear(1.5f), _fovExtFar(1.2f), _fovExtFalloff(10.0f),
       _clipOffset(0.05f),
-      _reflectionTextureSize(512), _refractionTextureSize(512),
+      _reflectionTextureSize(512), _refractionTextureSize(512), _passTargetScale(0.0f),
+      _causticsMotionTolerance(0.5f),
       _refractionCameraRotation(true), _reflectionEnabled(true), _refractionEnabled(true),
       _causticsEnabled(true), _causticsFiltering(true), _causticsResolution(256), _photonGridSize(512),
       _causticsIntensity(1.0f), _causticsGather(GATHER_AUTO),
@@ -80,6 +81,7 @@ WaterSettings::WaterSettings(const WaterSettings& o, const osg::CopyOp& copyop)
       _fovExtNear(o._fovExtNear), _fovExtFar(o._fovExtFar), _fovExtFalloff(o._fovExtFalloff),
       _clipOffset(o._clipOffset),
       _reflectionTextureSize(o._reflectionTextureSize), _refractionTextureSize(o._refractionTextureSize),
+      _passTargetScale(o._passTargetScale), _causticsMotionTolerance(o._causticsMotionTolerance),
       _refractionCameraRotation(o._refractionCameraRotation),
       _reflectionEnabled(o._reflectionEnabled), _refractionEnabled(o._refractionEnabled),
       _causticsEnabled(o._causticsEnabled), _causticsFiltering(o._causticsFiltering),
@@ -125,6 +127,17 @@ void WaterSettings::setOneStepMaxDepth(float d) { _oneStepMaxDepth = clampOr("on
 void WaterSettings::setUnderwaterLookupScale(float m) { _underwaterLookupScale = clampOr("underwaterLookupScale", m, 0.0f, 1000.0f, 1.5f); touch(); }
 void WaterSettings::setClipOffset(float d) { _clipOffset = clampOr("clipOffset", d, 0.0f, 100.0f, 0.05f); touch(); }
 void WaterSettings::setReflectionTextureSize(int s) { _reflectionTextureSize = clampInt("reflectionTextureSize", s, 16, 4096); touch(); }
+void WaterSettings::setPassTargetScale(float f)
+{
+    // 0 selects the fixed sizes; anything else is a fraction of the viewport
+    _passTargetScale = f == 0.0f ? 0.0f : clampOr("passTargetScale", f, 0.05f, 2.0f, 0.0f);
+    touch();
+}
+void WaterSettings::setCausticsMotionTolerance(float t)
+{
+    _causticsMotionTolerance = clampOr("causticsMotionTolerance", t, 0.0f, 16.0f, 0.5f);
+    touch();
+}
 void WaterSettings::setRefractionTextureSize(int s) { _refractionTextureSize = clampInt("refractionTextureSize", s, 16, 4096); touch(); }
 void WaterSettings::setCausticsResolution(int s) { _causticsResolution = clampInt("causticsResolution", s, 16, 4096); touch(); }
 void WaterSettings::setPhotonGridSize(int s) { _photonGridSize = clampInt("photonGridSize", s, 16, 4096); touch(); }

@@ -13,9 +13,36 @@
 
 using namespace osgWater;
 
+// The quality preset, when the speed settings are one other than the default (BALANCED): written
+// first, so the settings after it in the file (any written) come on top of its bundle.
+static bool checkQuality(const WaterSettings& s)
+{
+    return s.getQuality() == WaterSettings::QUALITY_FAST || s.getQuality() == WaterSettings::QUALITY_EXACT;
+}
+
+static bool readQuality(osgDB::InputStream& is, WaterSettings& s)
+{
+    std::string name;
+    is >> name;
+    for (WaterSettings::Quality q : { WaterSettings::QUALITY_FAST, WaterSettings::QUALITY_BALANCED, WaterSettings::QUALITY_EXACT })
+        if (name == WaterSettings::qualityName(q)) {
+            s.setQuality(q);
+            return true;
+        }
+    OSG_WARN << "osgWater::WaterSettings: unknown Quality \"" << name << "\", keeping the settings as they are" << std::endl;
+    return true;
+}
+
+static bool writeQuality(osgDB::OutputStream& os, const WaterSettings& s)
+{
+    os << std::string(WaterSettings::qualityName(s.getQuality())) << std::endl;
+    return true;
+}
+
 REGISTER_OBJECT_WRAPPER(osgWater_WaterSettings, new osgWater::WaterSettings, osgWater::WaterSettings,
                         "osg::Object osgWater::WaterSettings")
 {
+    ADD_USER_SERIALIZER(Quality);
     ADD_PRECISE_FLOAT_SERIALIZER(AirIOR, 1.0f);
     ADD_PRECISE_FLOAT_SERIALIZER(WaterIOR, 1.333f);
     ADD_PRECISE_VEC3F_SERIALIZER(WaterColor, osg::Vec3f(0.0f, 0.2f, 0.1f));
@@ -49,6 +76,7 @@ REGISTER_OBJECT_WRAPPER(osgWater_WaterSettings, new osgWater::WaterSettings, osg
     ADD_PRECISE_FLOAT_SERIALIZER(ClipOffset, 0.05f);
     ADD_INT_SERIALIZER(ReflectionTextureSize, 512);
     ADD_INT_SERIALIZER(RefractionTextureSize, 512);
+    ADD_PRECISE_FLOAT_SERIALIZER(PassTargetScale, 0.0f);
     ADD_BOOL_SERIALIZER(RefractionCameraRotation, true);
     ADD_BOOL_SERIALIZER(ReflectionEnabled, true);
     ADD_BOOL_SERIALIZER(RefractionEnabled, true);
@@ -63,6 +91,7 @@ REGISTER_OBJECT_WRAPPER(osgWater_WaterSettings, new osgWater::WaterSettings, osg
         ADD_ENUM_VALUE(GATHER_POINTS_TEXTURE);
         ADD_ENUM_VALUE(GATHER_CPU);
     END_ENUM_SERIALIZER();
+    ADD_PRECISE_FLOAT_SERIALIZER(CausticsMotionTolerance, 0.5f);
     BEGIN_ENUM_SERIALIZER(UnderwaterModel, UNDERWATER_PHYSICAL);
         ADD_ENUM_VALUE(UNDERWATER_PHYSICAL);
         ADD_ENUM_VALUE(UNDERWATER_THESIS);

@@ -57,6 +57,8 @@ std::vector<FloatSetting> floatSettings()
         SETTING("underwaterLookupScale", setUnderwaterLookupScale, getUnderwaterLookupScale, 0.0f, 1000.0f),
         SETTING("clipOffset", setClipOffset, getClipOffset, 0.0f, 100.0f),
         SETTING("causticsIntensity", setCausticsIntensity, getCausticsIntensity, 0.0f, 100.0f),
+        SETTING("causticsMotionTolerance", setCausticsMotionTolerance, getCausticsMotionTolerance, 0.0f, 16.0f),
+        SETTING("passTargetScale", setPassTargetScale, getPassTargetScale, 0.0f, 2.0f),
         SETTING("glowIntensity", setGlowIntensity, getGlowIntensity, 0.0f, 100.0f),
         SETTING("glowRadius", setGlowRadius, getGlowRadius, 0.0f, 32.0f),
         SETTING("glowResolution", setGlowResolution, getGlowResolution, 1.0f / 64.0f, 1.0f),

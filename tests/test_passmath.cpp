@@ -260,3 +260,13 @@ TEST(PassMath, NearPlaneReachesTheWaterOnlyWhenItCrossesTheWaveBand)
     // a raised level counts: 2 m above z = 0 is 0.2 m above water at level 1.8
     EXPECT_TRUE(nearPlaneReachesWater(lookAt({ 0, 0, 2 }, { 0, 10, 2 }), proj, 1.8, band));
 }
+
+TEST(PassMath, PassTargetsFollowTheViewportWhenScaled)
+{
+    EXPECT_EQ(passTargetSize(1280, 720, 0.0, 512), osg::Vec2i(512, 512)) << "0: the fixed square";
+    EXPECT_EQ(passTargetSize(1280, 720, 0.5, 512), osg::Vec2i(640, 360)) << "the view's aspect";
+    EXPECT_EQ(passTargetSize(0, 0, 0.5, 512), osg::Vec2i(512, 512)) << "no viewport: the fixed square";
+    EXPECT_EQ(passTargetSize(100, 20, 0.1, 512), osg::Vec2i(16, 16)) << "at least 16 texels a side";
+    EXPECT_EQ(passTargetSize(8192, 100, 1.0, 512), osg::Vec2i(4096, 100)) << "at most 4096";
+    EXPECT_EQ(passTargetSize(1280, 720, NAN, 256), osg::Vec2i(256, 256));
+}

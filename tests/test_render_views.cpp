@@ -155,3 +155,49 @@ TEST(RenderViews, NoPassesWhenTheWaterIsOutOfView)
     EXPECT_EQ(counter->visits["osgWater.ReflectionCamera"], 0);
     EXPECT_EQ(water->getViewPasses(h.camera()), nullptr);
 }
+
+TEST(RenderViews, PassTargetsScaledToTheViewShadeFlatWaterAsTheOpticsMirrorDoes)
+{
+    // a wide view and targets of its own size: rectangular targets, the view's aspect, read through
+    // the same matrices; the shading still eq. 9 of eq. 5 of the bed and the sky. Tolerance 0.02:
+    // 8-bit targets, and the search's nearest depth texel (100 rows here, against 512 for the fixed
+    // squares, where 0.01 holds) moves the bottom, so the path under water, by up to a texel
+    Harness h(200, 100);
+    REQUIRE_GL(h);
+    osg::ref_ptr<WaterNode> water = new WaterNode;
+    water->getSurface()->setWaves({});
+    water->getSurface()->setSize(400.0f);
+    water->getSettings()->setAttenuation(0.3f);
+    water->getSettings()->setPassTargetScale(1.0f);
+    water->addChild(emissiveQuad(osg::Vec3(-100, -100, -1.5f), osg::Vec3(100, -100, -1.5f), osg::Vec3(100, 100, -1.5f),
+                                 osg::Vec3(-100, 100, -1.5f), osg::Vec4(0.6f, 0.5f, 0.4f, 1)));
+    h.setScene(water.get());
+    h.lookAt(osg::Vec3d(0, -3, 2.5), osg::Vec3d(0, 8, -1.5));
+    h.frame(0.0);
+    ViewPasses* p = water->getViewPasses(h.camera());
+    ASSERT_NE(p, nullptr);
+    for (const PassCamera* c : { static_cast<PassCamera*>(p->getReflectionCamera()), static_cast<PassCamera*>(p->getRefractionCamera()) }) {
+        EXPECT_EQ(c->getTargetWidth(), 200);
+        EXPECT_EQ(c->getTargetHeight(), 100);
+        EXPECT_EQ(c->getColorTexture()->getTextureWidth(), 200);
+        EXPECT_EQ(c->getColorTexture()->getTextureHeight(), 100);
+    }
+    osg::ref_ptr<osg::Image> img = h.readColor();
+    const MirrorComparison m = compareFlatWaterWithOptics(h, img.get(), *water->getSettings(), osg::Matrixd::identity(),
+                                                          0.0, -1.5, osg::Vec3(0.6f, 0.5f, 0.4f), 5);
+    EXPECT_FALSE(m.bedMissed);
+    EXPECT_GT(m.checked, 100);
+    EXPECT_LT(m.worst, 0.02);
+
+    // half the view per axis
+    water->getSettings()->setPassTargetScale(0.5f);
+    h.frame(0.0);
+    EXPECT_EQ(water->getViewPasses(h.camera())->getReflectionCamera()->getTargetWidth(), 100);
+    EXPECT_EQ(water->getViewPasses(h.camera())->getReflectionCamera()->getTargetHeight(), 50);
+
+    // 0: the fixed squares again
+    water->getSettings()->setPassTargetScale(0.0f);
+    h.frame(0.0);
+    EXPECT_EQ(water->getViewPasses(h.camera())->getRefractionCamera()->getTargetWidth(), 512);
+    EXPECT_EQ(water->getViewPasses(h.camera())->getRefractionCamera()->getTargetHeight(), 512);
+}

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <fstream>
 #include <random>
+#include <tuple>
 #include <sstream>
 
 using namespace osgWater;
@@ -284,4 +285,59 @@ TEST(Serialization, TruncatedAndGarbageFilesFailCleanly)
     osg::ref_ptr<WaterNode> w = readWater(tmp("huge.osgt"));
     if (w.valid()) EXPECT_LE(w->getSurface()->getWaves().size(), WaterSurface::MAX_WAVES);
     EXPECT_FALSE(osgDB::readRefNodeFile(tmp("does_not_exist.osgt")).valid());
+}
+
+namespace {
+// the settings a quality preset bundles, as one comparable tuple
+std::tuple<int, int, float, int, int, int, int, float, float> speedSettings(const WaterSettings& s)
+{
+    return { s.getRefractionLookup(), s.getSearchSteps(), s.getPassTargetScale(), s.getReflectionTextureSize(),
+             s.getRefractionTextureSize(), s.getCausticsResolution(), s.getPhotonGridSize(),
+             s.getCausticsMotionTolerance(), s.getGlowResolution() };
+}
+}
+
+TEST(Serialization, QualityPresetsRoundTrip)
+{
+    for (WaterSettings::Quality q : { WaterSettings::QUALITY_FAST, WaterSettings::QUALITY_BALANCED, WaterSettings::QUALITY_EXACT })
+        for (const char* ext : { "osgt", "osgb" }) {
+            osg::ref_ptr<WaterNode> w = new WaterNode;
+            w->getSettings()->setQuality(q);
+            ASSERT_EQ(w->getSettings()->getQuality(), q);
+            const std::string file = tmp(std::string("quality.") + ext);
+            ASSERT_TRUE(osgDB::writeNodeFile(*w, file));
+            osg::ref_ptr<WaterNode> back = readWater(file);
+            ASSERT_TRUE(back.valid());
+            EXPECT_EQ(back->getSettings()->getQuality(), q) << WaterSettings::qualityName(q) << " " << ext;
+            EXPECT_EQ(speedSettings(*back->getSettings()), speedSettings(*w->getSettings()));
+            if (std::string(ext) == "osgt" && q != WaterSettings::QUALITY_BALANCED)
+                EXPECT_NE(slurp(file).find(std::string("Quality ") + WaterSettings::qualityName(q)), std::string::npos);
+        }
+    // FAST with one setting put back to its default is a custom set: written field by field and read
+    // back as it was, not as the preset
+    osg::ref_ptr<WaterNode> w = new WaterNode;
+    w->getSettings()->setQuality(WaterSettings::QUALITY_FAST);
+    w->getSettings()->setCausticsMotionTolerance(0.5f);
+    EXPECT_EQ(w->getSettings()->getQuality(), WaterSettings::QUALITY_CUSTOM);
+    ASSERT_TRUE(osgDB::writeNodeFile(*w, tmp("custom.osgt")));
+    EXPECT_EQ(slurp(tmp("custom.osgt")).find("Quality"), std::string::npos);
+    osg::ref_ptr<WaterNode> back = readWater(tmp("custom.osgt"));
+    ASSERT_TRUE(back.valid());
+    EXPECT_EQ(speedSettings(*back->getSettings()), speedSettings(*w->getSettings()));
+}
+
+TEST(Serialization, AnUnknownQualityIsSaidAndIgnored)
+{
+    const std::string file = tmp("badquality.osgt");
+    {
+        std::ofstream out(file);
+        out << "#Ascii Scene\n#Version 161\n#Generator OpenSceneGraph 3.6.5\n\nosgWater::WaterNode {\n  UniqueID 1\n"
+               "  Settings TRUE {\n    osgWater::WaterSettings {\n      UniqueID 2\n      Quality superb\n"
+               "      SearchSteps 5\n    }\n  }\n}\n";
+    }
+    ScopedWarnCapture capture;
+    osg::ref_ptr<WaterNode> w = readWater(file);
+    ASSERT_TRUE(w.valid());
+    EXPECT_NE(capture.str().find("unknown Quality"), std::string::npos);
+    EXPECT_EQ(w->getSettings()->getSearchSteps(), 5) << "the fields after it still read";
 }
