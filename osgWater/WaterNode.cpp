@@ -352,7 +352,7 @@ void WaterNode::prepareGlow(osgUtil::CullVisitor& cv, const ViewFrame& v)
     const double f = _settings->getGlowResolution();
     const int w = fitTexture("glow target width", std::max(1, int(std::lround(vp->width() * f))), v.support);
     const int h = fitTexture("glow target height", std::max(1, int(std::lround(vp->height() * f))), v.support);
-    v.passes->getOrCreateGlow(w, h, v.support.floatTargets)->update(v.ctx, _surface.get());
+    v.passes->getOrCreateGlow(w, h, v.support.floatTargets)->update(v.ctx, _surface.get(), *vp, _skipping);
 }
 
 CausticsSupport WaterNode::support(unsigned int context)

@@ -147,3 +147,35 @@ TEST(Skips, CausticsAreReusedUntilTheWavesCanHaveMovedThem)
     h.frame(50.0);
     EXPECT_FALSE(rendered());
 }
+
+TEST(Skips, TheGlowIsDrawnOnlyWhereTheHighlightCanReach)
+{
+    Harness h(200, 150);
+    REQUIRE_GL(h);
+    osg::ref_ptr<WaterNode> water = new WaterNode;
+    water->getSurface()->setWaves({ makeWave(1.0f, 0.2f, 5.0f, 0.01f) });
+    water->getSurface()->setSize(400.0f);
+    WaterSettings* s = water->getSettings();
+    s->setCausticsEnabled(false);
+    s->setSunDirection(osg::Vec3(0.1f, 0.9f, 0.42f)); // its highlight 25 degrees below the horizon, in view
+    s->setGlowExponent(2000.0f); // a small highlight: a small part of the view
+    s->setGlowIntensity(4.0f);
+    water->addChild(checkerPlane(-2.0f, 200.0f, 1.0f));
+    h.setScene(water.get());
+    h.lookAt(osg::Vec3d(0, 0, 3), osg::Vec3d(0, 10, 0));
+
+    s->setGlowEnabled(false);
+    h.frame(1.0);
+    osg::ref_ptr<osg::Image> noGlow = h.readColor();
+    s->setGlowEnabled(true);
+    const SkipFrames f = renderBothWays(h, water.get(), 1.0);
+    ASSERT_TRUE(water->getViewPasses(h.camera())->getGlowDrawn());
+    EXPECT_GT(largestDifference(noGlow.get(), f.full.get()), 0.05f) << "the glow must show for the test to mean anything";
+
+    const GlowPasses* g = water->getViewPasses(h.camera())->getGlow();
+    const osg::Vec4i& reach = g->getGlowTexels();
+    EXPECT_LT(reach.z() * reach.w(), g->getWidth() * g->getHeight() / 2) << "the highlight covers little of the view";
+    const osg::Viewport* vp = g->getHighlightCamera()->getViewport();
+    EXPECT_LT(vp->width() * vp->height(), 0.75 * g->getWidth() * g->getHeight()) << "the highlight pass draws a part";
+    EXPECT_LE(largestDifference(f.full.get(), f.skipped.get()), 1.0f / 255.0f);
+}
