@@ -66,6 +66,9 @@ CausticsCamera::CausticsCamera(osg::Group* scene, osg::StateSet* sceneState, osg
     // the per-frame passes (the depth map is redrawn only on change); set once: draw callbacks
     // must not change while drawing
     _timer->attach(_photons.get(), _gather.get());
+    _depthTimer = new GpuTimer;
+    _depthTimer->setEnabled(false);
+    _depthTimer->attach(this);
 }
 
 osg::StateSet* CausticsCamera::depthOnlyState()

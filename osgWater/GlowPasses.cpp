@@ -68,7 +68,6 @@ GlowPasses::GlowPasses(osg::Group* scene, osg::StateSet* sceneState, osg::StateS
     _blurState->setAttribute(createProgram("osgWater.glowBlur", "screen.vert", "blur.frag"));
     _blurState->addUniform(new osg::Uniform("osgWater_GlowInput", int(UNIT_PASS_INPUT)));
     _blurState->addUniform(new osg::Uniform(osg::Uniform::FLOAT, "osgWater_GlowWeights", kMaxTaps + 1));
-    _blurState->addUniform(new osg::Uniform("osgWater_GlowTaps", 0));
     _blurState->setMode(GL_CULL_FACE, osg::StateAttribute::OFF);
     _blurState->setAttributeAndModes(new osg::Depth(osg::Depth::ALWAYS, 0.0, 1.0, false));
     _blurScissor = new osg::Scissor(0, 0, _width, _height);
@@ -87,9 +86,18 @@ GlowPasses::GlowPasses(osg::Group* scene, osg::StateSet* sceneState, osg::StateS
     c->setAttributeAndModes(new osg::BlendFunc(GL_ONE, GL_ONE));
     c->setAttributeAndModes(new osg::Depth(osg::Depth::ALWAYS, 0.0, 1.0, false));
     c->setMode(GL_CULL_FACE, osg::StateAttribute::OFF);
-    c->setRenderBinDetails(renderBin(PASS_GLOW_COMPOSITE), "RenderBin");
+    setUpPassBin(c, PASS_GLOW_COMPOSITE);
     _compositeScissor = new osg::Scissor(0, 0, 1, 1);
     c->setAttributeAndModes(_compositeScissor.get());
+
+    // timed when the view's pass timing is on; the callbacks are set once, before any draw
+    _highlightTimer = new GpuTimer;
+    _highlightTimer->attach(_highlight.get());
+    _blurTimer = new GpuTimer;
+    _blurTimer->attach(_blur[0].get(), _blur[1].get());
+    _compositeTimer = new GpuTimer;
+    _compositeTimer->attach(_composite->getDrawable(0));
+    setTimingEnabled(false);
     c->setDataVariance(osg::Object::DYNAMIC);
 }
 
@@ -272,11 +280,18 @@ void GlowPasses::update(const PassContext& ctx, WaterSurface* surface, const osg
     _composite->getStateSet()->getUniform("osgWater_GlowIntensity")->set(s.getGlowIntensity());
 }
 
+void GlowPasses::setTimingEnabled(bool on)
+{
+    for (GpuTimer* t : { _highlightTimer.get(), _blurTimer.get(), _compositeTimer.get() }) t->setEnabled(on);
+}
+
 void GlowPasses::setBlurWeights(const std::vector<float>& w)
 {
     osg::Uniform* wu = _blurState->getUniform("osgWater_GlowWeights");
     for (int i = 0; i <= kMaxTaps; ++i) wu->setElement(i, i < int(w.size()) ? w[i] : 0.0f);
-    _blurState->getUniform("osgWater_GlowTaps")->set(int(w.size()) - 1);
+    // a define is a value in each state set, not a shared object like the uniforms: set on both cameras
+    for (osg::Camera* c : { _blur[0].get(), _blur[1].get() })
+        c->getStateSet()->setDefine("OSGWATER_GLOW_TAPS", std::to_string(int(w.size()) - 1));
 }
 
 osg::Camera* GlowPasses::getPassCamera(PassId pass) const

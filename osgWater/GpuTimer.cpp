@@ -27,9 +27,31 @@ struct End : public osg::Camera::DrawCallback {
     explicit End(GpuTimer* t) : timer(t) {}
     void operator()(osg::RenderInfo& ri) const override { if (osg::ref_ptr<GpuTimer> t = timer.get()) t->end(ri); }
 };
+struct TimedDraw : public osg::Drawable::DrawCallback {
+    osg::observer_ptr<GpuTimer> timer;
+    explicit TimedDraw(GpuTimer* t) : timer(t) {}
+    void drawImplementation(osg::RenderInfo& ri, const osg::Drawable* drawable) const override
+    {
+        osg::ref_ptr<GpuTimer> t = timer.get();
+        if (t) t->begin(ri);
+        drawable->drawImplementation(ri);
+        if (t) t->end(ri);
+    }
+};
 }
 
 GpuTimer::GpuTimer() : _ms(-1.0) {}
+
+void GpuTimer::attach(osg::Drawable* drawable)
+{
+    drawable->setDrawCallback(new TimedDraw(this));
+}
+
+void GpuTimer::setEnabled(bool on)
+{
+    if (!on) _ms = -1.0;
+    _enabled = on;
+}
 
 void GpuTimer::attach(osg::Camera* camera)
 {
@@ -51,6 +73,7 @@ void GpuTimer::detach(osg::Camera* camera)
 
 void GpuTimer::begin(osg::RenderInfo& ri)
 {
+    if (!_enabled) return;
     Query& q = _queries[ri.getContextID()];
     if (q.failed) return;
     osg::GLExtensions* ext = ri.getState()->get<osg::GLExtensions>();

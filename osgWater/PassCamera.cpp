@@ -61,6 +61,12 @@ void osgWater::setUpPassTarget(osg::Camera* camera, int width, int height, PassI
     camera->setUserValue(kWaterPassKey, int(pass));
 }
 
+void osgWater::setUpPassBin(osg::StateSet* ss, PassId pass)
+{
+    ss->setRenderBinDetails(renderBin(pass), "RenderBin");
+    ss->setNestRenderBins(false); // nested, a bin -1 or 20 would sort within the parent's bin
+}
+
 bool osgWater::isWaterPass(const osg::Camera* camera)
 {
     int pass;

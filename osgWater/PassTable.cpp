@@ -25,8 +25,8 @@ const PassRow kTable[PASS_COUNT] = {
     { PASS_GLOW_HIGHLIGHT, "glow highlight",  STAGE_PRE_RENDER, 0,                            RES_GLOW_HIGHLIGHT,    false, true,  glowWanted },
     { PASS_GLOW_BLUR_H,    "glow blur x",     STAGE_PRE_RENDER, RES_GLOW_HIGHLIGHT,           RES_GLOW_HALF_BLURRED, false, true,  always },
     { PASS_GLOW_BLUR_V,    "glow blur y",     STAGE_PRE_RENDER, RES_GLOW_HALF_BLURRED,        RES_GLOW,              false, true,  always },
+    { PASS_SURFACE,        "surface",         STAGE_UNDERLAY,   RES_REFLECTION | RES_REFRACTION, RES_VIEW_IMAGE,     false, true,  waterInView },
     { PASS_SCENE,          "scene",           STAGE_VIEW,       0,                            RES_VIEW_IMAGE,        true,  false, always },
-    { PASS_SURFACE,        "surface",         STAGE_VIEW,       RES_REFLECTION | RES_REFRACTION, RES_VIEW_IMAGE,     false, true,  waterInView },
     { PASS_BACKDROP,       "backdrop",        STAGE_OVERLAY,    0,                            RES_VIEW_IMAGE,        false, true,  eyeBelow },
     { PASS_CAP,            "near-plane cap",  STAGE_OVERLAY,    RES_REFLECTION | RES_REFRACTION, RES_VIEW_IMAGE,     false, true,  waterInView },
     { PASS_GLOW_COMPOSITE, "glow composite",  STAGE_OVERLAY,    RES_GLOW,                     RES_VIEW_IMAGE,        false, true,  glowWanted },
@@ -34,6 +34,8 @@ const PassRow kTable[PASS_COUNT] = {
 
 // the first bin after the scene's own (OSG's opaque 0 and transparent 10, and room for a user's)
 const int kFirstOverlayBin = 19;
+// just before the scene's opaque bin
+const int kUnderlayBin = -1;
 
 }
 
@@ -79,6 +81,19 @@ std::string PassPlan::describe() const
     return s;
 }
 
+const char* osgWater::gpuTimeLabel(PassId id)
+{
+    switch (id) {
+    case PASS_PHOTONS: return "photons + gather";
+    case PASS_GLOW_BLUR_H: return "glow blur";
+    case PASS_GATHER:
+    case PASS_GLOW_BLUR_V:
+    case PASS_SCENE:
+    case PASS_COUNT: return nullptr;
+    default: return kTable[id].name;
+    }
+}
+
 int osgWater::renderOrder(PassId id)
 {
     return int(id);
@@ -86,6 +101,7 @@ int osgWater::renderOrder(PassId id)
 
 int osgWater::renderBin(PassId id)
 {
+    if (kTable[id].stage == STAGE_UNDERLAY) return kUnderlayBin;
     int bin = kFirstOverlayBin;
     for (int i = 0; i < id; ++i)
         if (kTable[i].stage == STAGE_OVERLAY) ++bin;

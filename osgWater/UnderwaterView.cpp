@@ -3,6 +3,7 @@
 #include <osgWater/Shaders>
 #include <osgWater/PassTable>
 #include <osgWater/PassMath>
+#include <osgWater/PassCamera>
 #include <osg/Depth>
 #include <osg/CullFace>
 
@@ -19,7 +20,9 @@ public:
         const osg::State& state = *ri.getState();
         if (_owner->capNeeded(state.getModelViewMatrix(), state.getProjectionMatrix())) {
             ++_owner->_capDraws;
+            _owner->_capTimer->begin(ri);
             drawable->drawImplementation(ri);
+            _owner->_capTimer->end(ri);
         } else {
             ++_owner->_capSkips;
         }
@@ -36,7 +39,8 @@ UnderwaterView::UnderwaterView()
     cap->setAttribute(createProgram("osgWater.cap", "screen.vert", "cap.frag"));
     cap->setAttributeAndModes(new osg::Depth(osg::Depth::ALWAYS, 0.0, 1.0, false));
     cap->setMode(GL_CULL_FACE, osg::StateAttribute::OFF);
-    cap->setRenderBinDetails(renderBin(PASS_CAP), "RenderBin");
+    setUpPassBin(cap, PASS_CAP);
+    _capTimer = new GpuTimer; // begun and ended by CapSkip when it draws
     _cap->getDrawable(0)->setDrawCallback(new CapSkip(this));
 
     // at the far plane, only where nothing was drawn (depth still clear)
@@ -46,7 +50,16 @@ UnderwaterView::UnderwaterView()
     bd->setAttribute(createProgram("osgWater.backdrop", "screen.vert", "backdrop.frag"));
     bd->setAttributeAndModes(new osg::Depth(osg::Depth::LEQUAL, 0.0, 1.0, false));
     bd->setMode(GL_CULL_FACE, osg::StateAttribute::OFF);
-    bd->setRenderBinDetails(renderBin(PASS_BACKDROP), "RenderBin");
+    setUpPassBin(bd, PASS_BACKDROP);
+    _backdropTimer = new GpuTimer;
+    _backdropTimer->attach(_backdrop->getDrawable(0));
+    setTimingEnabled(false);
+}
+
+void UnderwaterView::setTimingEnabled(bool on)
+{
+    _capTimer->setEnabled(on);
+    _backdropTimer->setEnabled(on);
 }
 
 void UnderwaterView::setWaveBand(double level, double waveBound)

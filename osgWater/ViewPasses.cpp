@@ -11,8 +11,13 @@ ViewPasses::ViewPasses(osg::Group* scene, osg::StateSet* sceneState, osg::StateS
 {
     _reflection = new ReflectionCamera(scene, sceneState, reflectionSize.x(), reflectionSize.y());
     _refraction = new RefractionCamera(scene, sceneState, refractionSize.x(), refractionSize.y());
+    // the callbacks are set once, before any draw; setTimingEnabled() switches them on
     _reflectionTimer = new GpuTimer;
+    _reflectionTimer->attach(_reflection.get());
+    _reflectionTimer->setEnabled(false);
     _refractionTimer = new GpuTimer;
+    _refractionTimer->attach(_refraction.get());
+    _refractionTimer->setEnabled(false);
     // changes every frame: OSG must not draw it while the next frame's cull writes
     _waterInputs = new osg::StateSet;
     _waterInputs->setName("osgWater.viewWaterInputs");
@@ -28,8 +33,10 @@ ViewPasses::ViewPasses(osg::Group* scene, osg::StateSet* sceneState, osg::StateS
 
 GlowPasses* ViewPasses::getOrCreateGlow(int width, int height, bool floatTargets)
 {
-    if (!_glow.valid() || !_glow->matches(width, height, floatTargets))
+    if (!_glow.valid() || !_glow->matches(width, height, floatTargets)) {
         _glow = new GlowPasses(_scene, _sceneState.get(), _waterState.get(), width, height, floatTargets);
+        _glow->setTimingEnabled(_timing);
+    }
     return _glow.get();
 }
 
@@ -43,15 +50,10 @@ bool ViewPasses::matchesSizes(const osg::Vec2i& reflectionSize, const osg::Vec2i
 
 void ViewPasses::setTimingEnabled(bool on)
 {
-    if (on == _timing) return;
     _timing = on;
-    if (on) {
-        _reflectionTimer->attach(_reflection.get());
-        _refractionTimer->attach(_refraction.get());
-    } else {
-        _reflectionTimer->detach(_reflection.get());
-        _refractionTimer->detach(_refraction.get());
-    }
+    _reflectionTimer->setEnabled(on);
+    _refractionTimer->setEnabled(on);
+    if (_glow.valid()) _glow->setTimingEnabled(on);
 }
 
 void ViewPasses::update(const PassContext& ctx, const PassPlan& plan, const SceneLighting& lighting)

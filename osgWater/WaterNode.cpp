@@ -18,6 +18,8 @@ WaterNode::WaterNode()
 {
     setNumChildrenRequiringUpdateTraversal(getNumChildrenRequiringUpdateTraversal() + 1);
     _underwater = new UnderwaterView;
+    _surfaceTimer = new GpuTimer;
+    _surfaceTimer->setEnabled(false);
     refreshStates();
 }
 
@@ -30,7 +32,9 @@ WaterNode::WaterNode(const WaterNode& o, const osg::CopyOp& copyop)
 {
     setNumChildrenRequiringUpdateTraversal(getNumChildrenRequiringUpdateTraversal() + 1);
     _underwater = new UnderwaterView;
+    _surfaceTimer = new GpuTimer;
     setSkippingEnabled(o._skipping);
+    setPassTimingEnabled(o._passTiming);
     refreshStates();
 }
 
@@ -54,6 +58,52 @@ void WaterNode::setDebugOutput(DebugOutput d)
     refreshStates();
 }
 
+void WaterNode::setPassTimingEnabled(bool on)
+{
+    _passTiming = on;
+    _surfaceTimer->setEnabled(on);
+    _underwater->setTimingEnabled(on);
+    OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_causticsMutex);
+    if (_caustics.valid()) _caustics->setTimingEnabled(on);
+}
+
+double WaterNode::getPassMilliseconds(osg::Camera* camera, PassId pass) const
+{
+    const ViewPasses* p = _views.find(camera);
+    const GlowPasses* glow = p ? p->getGlow() : nullptr;
+    switch (pass) {
+    case PASS_SUN_DEPTH:
+    case PASS_PHOTONS: {
+        OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_causticsMutex);
+        if (!_caustics.valid() || !_passTiming) return -1.0;
+        return pass == PASS_SUN_DEPTH ? _caustics->getDepthMilliseconds() : _caustics->getMilliseconds();
+    }
+    case PASS_REFLECTION: return p ? p->getReflectionMilliseconds() : -1.0;
+    case PASS_REFRACTION: return p ? p->getRefractionMilliseconds() : -1.0;
+    case PASS_GLOW_HIGHLIGHT: return glow ? glow->getHighlightMilliseconds() : -1.0;
+    case PASS_GLOW_BLUR_H: return glow ? glow->getBlurMilliseconds() : -1.0;
+    case PASS_GLOW_COMPOSITE: return glow ? glow->getCompositeMilliseconds() : -1.0;
+    case PASS_SURFACE: return _surfaceTimer->getMilliseconds();
+    case PASS_CAP: return _underwater->getCapMilliseconds();
+    case PASS_BACKDROP: return _underwater->getBackdropMilliseconds();
+    default: return -1.0;
+    }
+}
+
+void WaterNode::recordPassStats(osgUtil::CullVisitor& cv, const ViewFrame& v, const PassPlan& plan) const
+{
+    osg::View* view = cv.getCurrentCamera()->getView();
+    osg::Stats* stats = view ? view->getStats() : nullptr;
+    if (!stats) return;
+    for (int i = 0; i < PASS_COUNT; ++i) {
+        const PassId id = PassId(i);
+        stats->setAttribute(v.frameNumber, std::string("osgWater ") + passRow(id).name + " ran", plan.runs(id) ? 1.0 : 0.0);
+        const char* label = gpuTimeLabel(id);
+        const double ms = label ? getPassMilliseconds(cv.getCurrentCamera(), id) : -1.0;
+        if (ms >= 0.0) stats->setAttribute(v.frameNumber, std::string("osgWater ") + label + " GPU ms", ms);
+    }
+}
+
 void WaterNode::setSkippingEnabled(bool on)
 {
     _skipping = on;
@@ -68,6 +118,8 @@ void WaterNode::refreshStates()
     if (_appliedSurface != _surface.get() || _surfaceRevision != _surface->getRevision()) dirtyBound();
     _states.applySettings(*_settings, *_surface, _debug);
     _underwater->setWaveBand(_surface->getLevel(), _surface->usesGrid() ? _surface->getMaxAmplitude() : 0.0);
+    // the grid is rebuilt when its size or resolution changes: time the one drawn now
+    if (_surface->usesGrid() && !_surface->getGeometry()->getDrawCallback()) _surfaceTimer->attach(_surface->getGeometry());
     _appliedSettings = _settings.get();
     _appliedSurface = _surface.get();
     _settingsRevision = _settings->getRevision();
@@ -210,6 +262,7 @@ void WaterNode::cull(osgUtil::CullVisitor& cv)
     // 4. walk the table: pre-render passes first, then the view's own rows
     for (int i = 0; i < PASS_COUNT; ++i)
         if (plan.runs(PassId(i))) cullPass(PassId(i), cv, v);
+    if (_passTiming) recordPassStats(cv, v, plan);
 }
 
 void WaterNode::warnIfScaledUnevenly(const osg::Matrixd& view)
@@ -334,8 +387,9 @@ void WaterNode::cullPass(PassId pass, osgUtil::CullVisitor& cv, const ViewFrame&
     }
     case PASS_SURFACE:
     case PASS_BACKDROP:
-    case PASS_CAP: { // the water program over the scene's, with this view's inputs
-        ScopedStateSets states(cv, { scene, v.lighting, p->getWaterInputs(), water });
+    case PASS_CAP: { // the water program over the scene's, with this view's inputs (cap and backdrop set their bins)
+        ScopedStateSets states(cv, { scene, v.lighting, p->getWaterInputs(), water,
+                                     pass == PASS_SURFACE ? _states.getSurfaceBinStateSet() : nullptr });
         osg::Node* node = pass == PASS_SURFACE ? static_cast<osg::Node*>(_surface.get())
                         : pass == PASS_CAP ? _underwater->getCap() : _underwater->getBackdrop();
         node->accept(cv);
@@ -405,8 +459,11 @@ void WaterNode::prepareCaustics(ViewFrame& v)
             const int resolution = fitTexture("causticsResolution", s.getCausticsResolution(), v.support);
             const int grid = fitTexture("photonGridSize", s.getPhotonGridSize(), v.support);
             if (!_caustics.valid() || !_caustics->matches(resolution, grid, v.support.floatTargets))
+            {
                 _caustics = new CausticsCamera(this, _states.getSceneStateSet(), _states.getWaterStateSet(),
                                                resolution, grid, v.support.floatTargets);
+                _caustics->setTimingEnabled(_passTiming);
+            }
             _caustics->update(f);
             const CausticsAim key{ _caustics.get(), _settings.get(), _surface.get(), _settings->getRevision(),
                                    _surface->getRevision(), _caustics->getDepthVersion() };

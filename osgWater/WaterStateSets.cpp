@@ -3,6 +3,7 @@
 #include <osgWater/WaterSurface>
 #include <osgWater/Shaders>
 #include <osgWater/PassTable>
+#include <osgWater/PassCamera>
 #include <osgWater/SceneLighting>
 #include <osg/Material>
 #include <osg/Texture2D>
@@ -73,6 +74,10 @@ WaterStateSets::WaterStateSets()
     _guest = new osg::StateSet;
     _guest->setName("osgWater.guest");
     _guest->setAttribute(createProgram("osgWater.guest", "guest.vert", "guest.frag"));
+
+    _surfaceBin = new osg::StateSet;
+    _surfaceBin->setName("osgWater.surfaceBin");
+    setUpPassBin(_surfaceBin.get(), PASS_SURFACE);
 }
 
 void WaterStateSets::applySettings(const WaterSettings& s, const WaterSurface& surface, DebugOutput debug)
@@ -129,6 +134,7 @@ void WaterStateSets::resizeGLObjectBuffers(unsigned int maxSize)
     _scene->resizeGLObjectBuffers(maxSize);
     _water->resizeGLObjectBuffers(maxSize);
     _guest->resizeGLObjectBuffers(maxSize);
+    _surfaceBin->resizeGLObjectBuffers(maxSize);
 }
 
 void WaterStateSets::releaseGLObjects(osg::State* state) const
@@ -136,4 +142,5 @@ void WaterStateSets::releaseGLObjects(osg::State* state) const
     _scene->releaseGLObjects(state);
     _water->releaseGLObjects(state);
     _guest->releaseGLObjects(state);
+    _surfaceBin->releaseGLObjects(state);
 }

@@ -53,6 +53,8 @@ TEST(PassTable, RenderOrdersAndBinsFollowTheTable)
         } else if (row.stage == STAGE_OVERLAY) {
             EXPECT_GT(renderBin(row.id), lastBin) << row.name;
             lastBin = renderBin(row.id);
+        } else if (row.stage == STAGE_UNDERLAY) {
+            EXPECT_LT(renderBin(row.id), 0) << row.name << ": before the scene's opaque bin";
         }
     }
     // the units the scene and water programs sample at once never collide
@@ -96,7 +98,7 @@ TEST(PassTable, APassNothingReadsDoesNotRun)
     EXPECT_FALSE(r.count(PASS_GLOW_BLUR_V));
     EXPECT_FALSE(r.count(PASS_GLOW_HIGHLIGHT));
     f.caustics = false; // no caustics: neither their three passes
-    EXPECT_EQ(planPasses(f).describe(), "reflection, refraction, scene, surface, near-plane cap");
+    EXPECT_EQ(planPasses(f).describe(), "reflection, refraction, surface, scene, near-plane cap");
 }
 
 TEST(PassTable, SharedCausticsRunOncePerFrameAndTheSunDepthOnlyWhenStale)

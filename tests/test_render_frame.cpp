@@ -221,3 +221,43 @@ TEST(RenderFrame, ReleasingTheNodeGivesBackEveryGLObjectItMade)
     EXPECT_TRUE(allFinite(h.readColor().get()));
     EXPECT_GT(countGLObjects(h.context(), highest).textures, before.textures + 4);
 }
+
+TEST(RenderFrame, PassTimesAndWhetherEachPassRanGoIntoTheViewersStatistics)
+{
+    Harness h(96, 64);
+    REQUIRE_GL(h);
+    osg::ref_ptr<WaterNode> water = new WaterNode;
+    water->getSurface()->setSize(200.0f);
+    water->getSettings()->setCausticsEnabled(false);
+    water->getSettings()->setGlowEnabled(false);
+    water->addChild(checkerPlane(-2.0f, 200.0f, 1.0f));
+    water->setPassTimingEnabled(true);
+    h.setScene(water.get());
+    h.lookAt(osg::Vec3d(0, 0, 3), osg::Vec3d(0, 10, -1));
+    for (int i = 0; i < 4; ++i) {
+        h.frame(1.0 + i / 60.0); // results are read a frame after they are made ...
+        h.readColor();           // ... and finished (as a swap finishes them)
+    }
+    osg::Stats* stats = h.viewer()->getViewerStats();
+    const unsigned int frame = h.viewer()->getFrameStamp()->getFrameNumber();
+    double v = -1.0;
+    ASSERT_TRUE(stats->getAttribute(frame, "osgWater reflection ran", v));
+    EXPECT_EQ(v, 1.0);
+    ASSERT_TRUE(stats->getAttribute(frame, "osgWater glow highlight ran", v));
+    EXPECT_EQ(v, 0.0) << "the glow is off";
+    ASSERT_TRUE(stats->getAttribute(frame, "osgWater photons ran", v));
+    EXPECT_EQ(v, 0.0) << "the caustics are off";
+    for (const char* timed : { "osgWater reflection GPU ms", "osgWater refraction GPU ms", "osgWater surface GPU ms" }) {
+        ASSERT_TRUE(stats->getAttribute(frame, timed, v)) << timed;
+        EXPECT_GE(v, 0.0) << timed;
+        EXPECT_LT(v, 10000.0) << timed;
+    }
+    EXPECT_GE(water->getPassMilliseconds(h.camera(), PASS_REFLECTION), 0.0);
+    EXPECT_LT(water->getPassMilliseconds(h.camera(), PASS_SCENE), 0.0) << "the scene is drawn in the view's bins: not timed";
+
+    // off: nothing measured, nothing written
+    water->setPassTimingEnabled(false);
+    h.frame(2.0);
+    EXPECT_LT(water->getPassMilliseconds(h.camera(), PASS_REFLECTION), 0.0);
+    EXPECT_FALSE(stats->getAttribute(h.viewer()->getFrameStamp()->getFrameNumber(), "osgWater reflection ran", v));
+}

@@ -1,4 +1,5 @@
 #include "BenchOptions.h"
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -11,6 +12,7 @@ namespace {
 const char* kUsage =
     "usage: osgwaterbench --scene FILE --views FILE [--size WxH] [--out DIR] [--techniques LIST]\n"
     "                     [--docs DIR] [--frames N] [--photons N] [--quick]\n"
+    "                     [--ablation-rounds N] [--ablation-only]\n"
     "  --scene FILE       .osgt/.osgb with an osgWater::WaterNode, or any model (water added at z = 0)\n"
     "  --views FILE       one view per line: ex ey ez cx cy cz ux uy uz [t] [# name]\n"
     "  --size WxH         viewport (default 1280x720)\n"
@@ -19,6 +21,8 @@ const char* kUsage =
     "  --docs DIR         also regenerate DIR/BENCHMARKS.md and DIR/benchmark-speed-error.png\n"
     "  --frames N         timed frames per technique and view (default 30, at least 30)\n"
     "  --photons N        photons of the caustics reference (default 4000000)\n"
+    "  --ablation-rounds N  alternating rounds of the ablation table (default 3, 0: none)\n"
+    "  --ablation-only    the ablation table alone (timing; no techniques, no reference)\n"
     "  --quick            smoke run: 96x64, first view, default and one-step, 3 frames, 20000 photons\n";
 
 bool number(const char* s, double& out)
@@ -45,6 +49,12 @@ bool BenchOptions::read(int argc, char** argv, std::string& error)
         double x = 0.0;
         if (a == "-h" || a == "--help") { std::cout << kUsage; help = true; return true; }
         else if (a == "--quick") quick = true;
+        else if (a == "--ablation-only") ablationOnly = true;
+        else if (a == "--ablation-rounds") {
+            if (!value(v)) return false;
+            if (!number(v.c_str(), x) || x < 0 || x > 100) { error = "--ablation-rounds " + v + ": expected 0..100"; return false; }
+            ablationRounds = int(x);
+        }
         else if (a == "--scene") { if (!value(scene)) return false; }
         else if (a == "--views") { if (!value(viewsFile)) return false; }
         else if (a == "--out") { if (!value(out)) return false; }
@@ -81,6 +91,7 @@ bool BenchOptions::read(int argc, char** argv, std::string& error)
         if (!framesGiven) frames = 3;
         if (!photonsGiven) photons = 20000;
         if (techniques.empty()) techniques = "default,one-step";
+        ablationRounds = std::min(ablationRounds, 1);
     } else if (frames < 30) {
         std::cerr << "warning: --frames " << frames << " is below 30; using 30 (medians need them)" << std::endl;
         frames = 30;

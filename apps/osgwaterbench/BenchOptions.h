@@ -10,7 +10,9 @@ struct BenchOptions {
     int width = 1280, height = 720;
     int frames = 30;               //!< timed frames per technique and view (>= 30 unless --quick)
     size_t photons = 4000000;      //!< caustics reference photons (>= 1e6 for published tables)
+    int ablationRounds = 3;        //!< alternating rounds of the ablation (0: none)
     bool quick = false, help = false;
+    bool ablationOnly = false;     //!< the ablation alone: no techniques, no reference
     //! Parses argv; false with a message on a bad or missing value.
     bool read(int argc, char** argv, std::string& error);
 };

@@ -1,6 +1,7 @@
 // The benchmark's outputs: results.json (a list of records), results.csv, and the generated
 // docs (BENCHMARKS.md with the targets, per-technique and per-view tables, and a gnuplot PNG).
 #pragma once
+#include "Ablation.h"
 #include "Metrics.h"
 #include <string>
 #include <vector>
@@ -41,6 +42,23 @@ bool writeJson(const std::string& file, const std::vector<Record>& records, std:
 bool writeCsv(const std::string& file, const std::vector<Record>& records, std::string& error);
 //! BENCHMARKS.md and its plot (PNG via gnuplot; without gnuplot the page says the plot is missing).
 bool writeDocs(const std::string& dir, const RunInfo& info, const std::vector<Record>& records,
-               const std::vector<Summary>& summaries, std::string& error);
+               const std::vector<Summary>& summaries, const Ablation* ablation, std::string& error);
+
+//! What the ablation table says, summed up over the views (see Report.cpp for each figure's rule).
+struct AblationSummary {
+    struct Row {
+        std::string config, effect;
+        double ratio = 0.0;   //!< median over views with water in view and the eye above it
+        double frameMs = 0.0; //!< the same views' median frame time
+        double cost = 0.0;    //!< an effect's cost: everything on / this - 1, median over the views where it ran
+        int views = 0;        //!< views the cost is the median of
+    };
+    std::vector<Row> rows;
+    double outOfView = 0.0; //!< everything on / plain with the water out of view (median over such views)
+    std::vector<std::pair<int, double>> passMs; //!< PassId -> median GPU ms over the views where it ran
+};
+AblationSummary summarizeAblation(const Ablation& a);
+bool writeAblationCsv(const std::string& file, const Ablation& a, std::string& error);
+void printAblation(const Ablation& a);
 
 }

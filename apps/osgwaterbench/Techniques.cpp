@@ -36,6 +36,8 @@ std::vector<Technique> allTechniques()
                          s.setCausticsGather(g);
                      } });
     t.push_back({ "glow-off", [](WaterSettings& s) { s.setGlowEnabled(false); } });
+    t.push_back({ "quality-fast", [](WaterSettings& s) { s.setQuality(WaterSettings::QUALITY_FAST); } });
+    t.push_back({ "quality-exact", [](WaterSettings& s) { s.setQuality(WaterSettings::QUALITY_EXACT); } });
     t.push_back({ "underwater-thesis", [](WaterSettings& s) { s.setUnderwaterModel(WaterSettings::UNDERWATER_THESIS); } });
     return t;
 }

@@ -3,6 +3,7 @@
 // estimates against an exact Embree reference (refraction, reflection, Fresnel) and of its
 // caustics against photon tracing. Writes results.json / results.csv and, with --docs, the
 // generated BENCHMARKS.md and its plot.
+#include "Ablation.h"
 #include "BenchOptions.h"
 #include "Probe.h"
 #include "Report.h"
@@ -208,6 +209,18 @@ int main(int argc, char** argv)
 
     const osg::ref_ptr<osgWater::WaterSettings> base =
         new osgWater::WaterSettings(*water->getSettings(), osg::CopyOp::DEEP_COPY_ALL);
+
+    // the ablation: every effect off in turn, the skips off, the presets, timed in one run
+    Ablation ablation;
+    if (o.ablationRounds > 0) {
+        ablation = runAblation(timing, scenes.get(), *water, views, *base, o.ablationRounds, o.quick ? 2 : 5);
+        if (!writeAblationCsv(o.out + "/ablation.csv", ablation, error)) {
+            std::cerr << "error: " << error << std::endl;
+            return 1;
+        }
+        printAblation(ablation);
+        if (o.ablationOnly) return 0;
+    }
     const Media media{ base->getAirIOR(), base->getWaterIOR() };
     const RayCaster sceneCaster(collectScene(*water));
     std::cout << "reference: " << sceneCaster.size() << " scene triangles" << std::endl;
@@ -316,7 +329,8 @@ int main(int argc, char** argv)
     }
     std::cout << "wrote " << o.out << "/results.json and results.csv (" << records.size() << " records)" << std::endl;
     if (!o.docs.empty()) {
-        if (!osgDB::makeDirectory(o.docs) || !writeDocs(o.docs, info, records, summaries, error)) {
+        if (!osgDB::makeDirectory(o.docs) ||
+            !writeDocs(o.docs, info, records, summaries, o.ablationRounds > 0 ? &ablation : nullptr, error)) {
             std::cerr << "error: " << error << std::endl;
             return 1;
         }

@@ -20,6 +20,7 @@
 #include <osg/Timer>
 #include <cstdio>
 #include <functional>
+#include <map>
 #include <iostream>
 
 namespace {
@@ -71,7 +72,7 @@ int runHeadless(osgViewer::Viewer& viewer, osg::Switch* scenes, osgWater::WaterN
     if (hud) hud->setNodeMask(0); // text costs the same with and without water: keep it out of the ratio
     viewer.getCamera()->setViewMatrixAsLookAt(o.eye, o.center, o.up);
     std::vector<Configuration> configs = configurations(scenes, water, o);
-    std::vector<double> reflMs, refrMs;
+    std::map<int, std::vector<double>> passMs; // pass -> GPU times of the first configuration
     const osgWater::WaterSettings* s = water->getSettings();
     const bool caustics = s->getCausticsEnabled();
     const osgWater::WaterSettings::CausticsGather gather = s->getCausticsGather();
@@ -94,9 +95,9 @@ int runHeadless(osgViewer::Viewer& viewer, osg::Switch* scenes, osgWater::WaterN
                 if (c && scenes->getValue(0) && s->getCausticsEnabled() && c->getMilliseconds() >= 0)
                     configs[which].causticsMs.push_back(c->getMilliseconds());
                 if (which != 0) continue;
-                if (osgWater::ViewPasses* p = water->getViewPasses(viewer.getCamera())) {
-                    if (p->getReflectionMilliseconds() >= 0) reflMs.push_back(p->getReflectionMilliseconds());
-                    if (p->getRefractionMilliseconds() >= 0) refrMs.push_back(p->getRefractionMilliseconds());
+                for (int pass = 0; pass < osgWater::PASS_COUNT; ++pass) {
+                    const double gpu = water->getPassMilliseconds(viewer.getCamera(), osgWater::PassId(pass));
+                    if (gpu >= 0.0 && osgWater::gpuTimeLabel(osgWater::PassId(pass))) passMs[pass].push_back(gpu);
                 }
             }
         }
@@ -124,8 +125,11 @@ int runHeadless(osgViewer::Viewer& viewer, osg::Switch* scenes, osgWater::WaterN
         if (!c.causticsMs.empty()) std::printf("   caustics GPU %.2f ms", osgWaterApps::median(c.causticsMs));
         std::printf("\n");
     }
-    std::printf("median pass GPU time (%s): reflection %.2f ms, refraction %.2f ms\n",
-                configs[0].name.c_str(), osgWaterApps::median(reflMs), osgWaterApps::median(refrMs));
+    std::printf("median pass GPU time (%s):", configs[0].name.c_str());
+    for (const auto& [pass, ms] : passMs)
+        std::printf("%s %s %.2f ms", pass == passMs.begin()->first ? "" : ",", osgWater::gpuTimeLabel(osgWater::PassId(pass)),
+                    osgWaterApps::median(ms));
+    std::printf("\n");
     return 0;
 }
 
@@ -142,7 +146,16 @@ int runWindowed(osgViewer::Viewer& viewer, osgWater::WaterNode* water, osg::Swit
     manipulators->setAutoComputeHomePosition(false); // start at --eye/--center, not at the bound's edge
     manipulators->setHomePosition(o.eye, o.center, o.up);
     viewer.setCameraManipulator(manipulators.get());
-    viewer.addEventHandler(new osgViewer::StatsHandler);
+    // the water's pass GPU times beside OSG's own (press s twice): the WaterNode writes them into
+    // the viewer's statistics
+    osg::ref_ptr<osgViewer::StatsHandler> stats = new osgViewer::StatsHandler;
+    for (int i = 0; i < osgWater::PASS_COUNT; ++i) {
+        const char* label = osgWater::gpuTimeLabel(osgWater::PassId(i));
+        if (!label) continue;
+        stats->addUserStatsLine(label, osg::Vec4(0.4f, 0.8f, 1.0f, 1.0f),
+                                osg::Vec4(0.4f, 0.8f, 1.0f, 0.5f), std::string("osgWater ") + label + " GPU ms", 1.0, true, false, "", "", 100.0);
+    }
+    viewer.addEventHandler(stats.get());
     viewer.addEventHandler(new osgViewer::HelpHandler(osg::ApplicationUsage::instance()));
     osg::ref_ptr<WaterKeys> keys = new WaterKeys(water);
     keys->addToggle('b', floaters, "the buoy and the boat");
