@@ -130,6 +130,19 @@ ViewPassesMap::Entry& ViewPassesMap::entry(osg::Camera* camera)
     return e;
 }
 
+void ViewPassesMap::setPlan(osg::Camera* camera, const PassPlan& plan)
+{
+    OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_mutex);
+    entry(camera).plan = plan;
+}
+
+PassPlan ViewPassesMap::getPlan(osg::Camera* camera) const
+{
+    OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_mutex);
+    auto it = _map.find(camera);
+    return it == _map.end() ? PassPlan() : it->second.plan;
+}
+
 osg::StateSet* ViewPassesMap::getLighting(osg::Camera* camera)
 {
     OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_mutex);

@@ -262,6 +262,7 @@ void WaterNode::cull(osgUtil::CullVisitor& cv)
     // 4. walk the table: pre-render passes first, then the view's own rows
     for (int i = 0; i < PASS_COUNT; ++i)
         if (plan.runs(PassId(i))) cullPass(PassId(i), cv, v);
+    _views.setPlan(cv.getCurrentCamera(), plan);
     if (_passTiming) recordPassStats(cv, v, plan);
 }
 

@@ -154,6 +154,11 @@ TEST(RenderViews, NoPassesWhenTheWaterIsOutOfView)
     EXPECT_EQ(counter->visits["main"], 1);
     EXPECT_EQ(counter->visits["osgWater.ReflectionCamera"], 0);
     EXPECT_EQ(water->getViewPasses(h.camera()), nullptr);
+    EXPECT_EQ(water->getPassPlan(h.camera()).describe(), "scene") << "nothing but the scene under its lighting";
+    // and in view again, the plan says so
+    h.lookAt(osg::Vec3d(0, 0, 21), osg::Vec3d(0, 8, 0), 30.0);
+    h.frame(0.0);
+    EXPECT_TRUE(water->getPassPlan(h.camera()).runs(PASS_SURFACE));
 }
 
 TEST(RenderViews, PassTargetsScaledToTheViewShadeFlatWaterAsTheOpticsMirrorDoes)

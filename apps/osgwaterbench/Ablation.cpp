@@ -57,7 +57,7 @@ Ablation runAblation(osgViewer::Viewer& viewer, osg::Switch* scenes, WaterNode& 
         AblationView av;
         av.view = view.name;
         camera->setViewMatrixAsLookAt(view.eye, view.center, view.up);
-        av.eyeBelow = water.eyeHeightAboveSurface(view.eye * osg::Matrixd::identity(), view.t) < 0.0;
+        av.eyeBelow = water.eyeHeightAboveSurface(view.eye, view.t) < 0.0; // the scene's water is not transformed
         std::map<std::string, std::vector<double>> roundMeans;
         std::map<int, std::vector<double>> passMs;
         double t = view.t;
@@ -77,9 +77,7 @@ Ablation runAblation(osgViewer::Viewer& viewer, osg::Switch* scenes, WaterNode& 
                     if (i < 2) continue; // warm-up: targets remade, programs linked
                     ms.push_back(osg::Timer::instance()->delta_m(t0, osg::Timer::instance()->tick()));
                     if (c.name != "everything on") continue;
-                    const osgWater::ViewPasses* p = water.getViewPasses(camera);
-                    if (!p) continue;
-                    const osgWater::PassPlan& plan = p->getPlan();
+                    const osgWater::PassPlan plan = water.getPassPlan(camera);
                     av.waterInView = av.waterInView || plan.runs(osgWater::PASS_SURFACE);
                     av.effectRan["caustics"] = av.effectRan["caustics"] || plan.runs(osgWater::PASS_PHOTONS);
                     av.effectRan["glow"] = av.effectRan["glow"] || plan.runs(osgWater::PASS_GLOW_COMPOSITE);
