@@ -94,6 +94,7 @@ void WaterStateSets::applySettings(const WaterSettings& s, const WaterSurface& s
     w->getUniform("osgWater_ReflectionScale")->set(s.getReflectionScale());
     w->getUniform("osgWater_UnderwaterScale")->set(s.getUnderwaterLookupScale());
     w->getUniform("osgWater_SearchSteps")->set(s.getSearchSteps());
+    w->setDefine("OSGWATER_SEARCH_STEPS", std::to_string(s.getSearchSteps()));
     w->getUniform("osgWater_SearchTolerance")->set(s.getSearchTolerance());
     w->getUniform("osgWater_OneStep")->set(osg::Vec2f(s.getOneStepScale(), s.getOneStepMaxDepth()));
     w->getUniform("osgWater_Level")->set(float(surface.getLevel()));

@@ -130,6 +130,11 @@ owBottomHit owOneStepSearch(vec3 U, vec3 R, float scale, float maxDv)
 // A candidate whose camera ray sees sky (it went under a clipped shore, or off the texture) is
 // no bottom: the next candidate is half way back towards U. If no candidate sees a bottom, A_1
 // (the bottom straight behind U, no refraction offset) is the answer: better than none.
+// The loop's static bound is the search steps' define (the includer imports OSGWATER_SEARCH_STEPS):
+// a software rasteriser pays for a loop up to its static bound more than for a uniform's count.
+#ifndef OSGWATER_SEARCH_STEPS
+#define OSGWATER_SEARCH_STEPS 8
+#endif
 owBottomHit owIterativeSearch(vec3 U, vec3 R, int steps, float tolerance)
 {
     owBottomHit best = owBottomHit(false, U, U, 0.0);
@@ -137,7 +142,7 @@ owBottomHit owIterativeSearch(vec3 U, vec3 R, int steps, float tolerance)
     if (!owBottomAlongRay(U, Aprev)) return best;
     best = owBottomHit(true, Aprev, Aprev, 1e30);
     vec3 W = U + length(Aprev - U) * R;
-    for (int i = 1; i <= 8; ++i) {
+    for (int i = 1; i <= OSGWATER_SEARCH_STEPS; ++i) {
         if (i > steps) break;
         vec3 A;
         if (!owBottomAlongRay(W, A)) { W = 0.5 * (U + W); continue; }

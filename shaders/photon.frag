@@ -1,5 +1,5 @@
 #version 130
-#pragma import_defines(OSGWATER_GRID, OSGWATER_FRESNEL)
+#pragma import_defines(OSGWATER_GRID, OSGWATER_FRESNEL, OSGWATER_SEARCH_STEPS)
 // Caustics pass 2: one photon per fragment. The sun ray through this texel is refracted at the
 // surface, its hit on the bed is found by the same depth-texture search as the refraction
 // (here in the sun's depth map, orthographic rays), and the photon is written as
