@@ -239,6 +239,9 @@ void GlowPasses::update(const PassContext& ctx, WaterSurface* surface, const osg
     double zn = 0.1, zf = 1000.0;
     nearFarForBound(ctx.view, bs, zn, zf);
     _highlight->setViewMatrix(ctx.view);
+    // the eye is above the water (no glow below it): what lies wholly below the troughs cannot hide
+    // the surface from it, so it is not drawn as an occluder
+    _highlightDraw->setCullingPlane(osg::Plane(0.0, 0.0, 1.0, -(ctx.level - ctx.clearance)));
     const osg::Matrixd projection = withNearFar(ctx.projection, zn, zf);
 
     // the texels the glow can reach: the highlight's, grown by the blur on each side
