@@ -291,10 +291,10 @@ bool writeDocs(const std::string& dir, const RunInfo& info, const std::vector<Re
            << "the median over rounds of the round's mean frame time. Ratio: over the plain scene, median over the "
            << "views with water in view and the eye above it. An effect's cost: everything on over the effect off, "
            << "less 1, median over the views where the effect's passes ran (caustics: the views whose frames rendered "
-           << "them; glow: those with the highlight in view). Caustics gather: " << ablation->gather << " in every "
+           << "them; glow: those with the highlight in view); for the skips, negative: what skipping saves. Caustics gather: " << ablation->gather << " in every "
            << "configuration (the automatic choice for the default). Errors of the same settings: the techniques' table "
            << "(caustics-off, glow-off, quality-fast, quality-exact).\n\n"
-           << "| configuration | ratio | frame ms | the effect costs | over views |\n|---|---|---|---|---|\n";
+           << "| configuration | ratio | frame ms | everything on ÷ this − 1 | over views |\n|---|---|---|---|---|\n";
         for (const AblationSummary::Row& r : abl.rows)
             md << "| " << r.config << " | " << fmt(r.ratio, 2, "×") << " | " << fmt(r.frameMs, 1) << " | "
                << (r.effect.empty() ? "–" : signedPct(r.cost)) << " | " << (r.effect.empty() ? "–" : std::to_string(r.views))

@@ -226,7 +226,7 @@ int main(int argc, char** argv)
     std::cout << "reference: " << sceneCaster.size() << " scene triangles" << std::endl;
     std::map<double, std::unique_ptr<RayCaster>> waterCasters;
     std::vector<ReferenceImage> references(views.size());
-    std::map<double, PhotonImage> photonImages;
+    std::map<std::pair<double, int>, PhotonImage> photonImages; // (time, caustics resolution) -> reference
     osgWater::WaterSurface* surface = water->getSurface();
     for (const View& v : views)
         if (!waterCasters.count(v.t)) waterCasters[v.t] = std::make_unique<RayCaster>(collectWater(*surface, v.t));
@@ -296,7 +296,8 @@ int main(int argc, char** argv)
             if (osg::ref_ptr<osg::Image> caustics = probe.readCaustics(*water)) {
                 r.nanPixels += countNonFinite(caustics.get());
                 const osgWater::CausticsCamera* cc = water->getCausticsCamera();
-                auto it = photonImages.find(v.t);
+                const std::pair<double, int> key(v.t, cc->getResolution()); // a preset may change the resolution
+                auto it = photonImages.find(key);
                 if (it == photonImages.end()) {
                     PhotonSettings ps;
                     ps.photons = o.photons;
@@ -305,7 +306,7 @@ int main(int argc, char** argv)
                     ps.media = media;
                     ps.progress = !o.quick;
                     std::cout << "caustics reference at t = " << v.t << " s:" << std::endl;
-                    it = photonImages.emplace(v.t, tracePhotons(sceneCaster, waterCaster, *surface, v.t,
+                    it = photonImages.emplace(key, tracePhotons(sceneCaster, waterCaster, *surface, v.t,
                                                                 cc->getLighting().localToSun, base->getSunDirection(), ps)).first;
                 }
                 r.causticsErrors = measureCaustics(it->second, caustics.get(), std::max(1, cc->getResolution() / 128));
