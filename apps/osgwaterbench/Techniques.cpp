@@ -22,6 +22,8 @@ std::vector<Technique> allTechniques()
                          s.setReflectionTextureSize(size);
                          s.setRefractionTextureSize(size);
                      } });
+    for (float f : { 0.5f, 1.0f })
+        t.push_back({ "view-targets-" + std::string(f == 0.5f ? "0.5" : "1"), [f](WaterSettings& s) { s.setPassTargetScale(f); } });
     t.push_back({ "fresnel-schlick", [](WaterSettings& s) { s.setFresnelModel(WaterSettings::FRESNEL_SCHLICK); } });
     t.push_back({ "fresnel-power", [](WaterSettings& s) { s.setFresnelModel(WaterSettings::FRESNEL_POWER); } });
     t.push_back({ "fresnel-exact", [](WaterSettings& s) { s.setFresnelModel(WaterSettings::FRESNEL_EXACT); } });
