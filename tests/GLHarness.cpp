@@ -249,6 +249,16 @@ bool allFinite(const osg::Image* img)
     return true;
 }
 
+osg::ref_ptr<osgWater::WaterNode> flatWaterOverBed(float depth)
+{
+    osg::ref_ptr<osgWater::WaterNode> water = new osgWater::WaterNode;
+    water->getSurface()->setWaves({});
+    water->getSurface()->setSize(400.0f);
+    water->addChild(emissiveQuad(osg::Vec3(-100, -100, -depth), osg::Vec3(100, -100, -depth),
+                                 osg::Vec3(100, 100, -depth), osg::Vec3(-100, 100, -depth), osg::Vec4(kBedGrey, 1.0f)));
+    return water;
+}
+
 osgWater::Wave makeWave(float dx, float dy, float wavelength, float amplitude)
 {
     osgWater::Wave w;

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 #include <osgWater/WaterSettings>
 #include <osgWater/WaterSurface>
+#include <osgWater/WaterNode>
 #include <functional>
 #include <cstdlib>
 #include <ostream>
@@ -116,6 +117,12 @@ std::string waterModelTestName(const ::testing::TestParamInfo<std::string>& info
 
 //! A wave of the sum of sines, for surfaces built in tests.
 osgWater::Wave makeWave(float dx, float dy, float wavelength, float amplitude);
+
+//! The emissive bed colour of flatWaterOverBed.
+const osg::Vec3 kBedGrey(0.6f, 0.5f, 0.4f);
+//! Flat water 400 m across at z = 0 over a uniform emissive bed of kBedGrey `depth` metres below: the
+//! scene compareFlatWaterWithOptics checks (settings at their defaults).
+osg::ref_ptr<osgWater::WaterNode> flatWaterOverBed(float depth);
 
 //! The Optics mirror against a rendered image of flat water at `level` over a uniform emissive bed
 //! of colour `bed` at `bedZ`, with the clear colour (the sky) reflected: each `step`-th pixel whose

@@ -92,14 +92,10 @@ TEST(RenderBodies, ATransformedWaterHoldsToTheOpticsMirror)
     // with the path under water in local metres
     Harness h(160, 120);
     REQUIRE_GL(h);
-    osg::ref_ptr<WaterNode> water = new WaterNode;
-    water->getSurface()->setWaves({});
-    water->getSurface()->setSize(400.0f);
+    const float depth = 1.5f;
+    osg::ref_ptr<WaterNode> water = flatWaterOverBed(depth);
     water->getSettings()->setFovExtension(1.5f, 1.5f, 10.0f);
     water->getSettings()->setAttenuation(0.3f);
-    const float depth = 1.5f;
-    water->addChild(emissiveQuad(osg::Vec3(-100, -100, -depth), osg::Vec3(100, -100, -depth),
-                                 osg::Vec3(100, 100, -depth), osg::Vec3(-100, 100, -depth), osg::Vec4(0.6f, 0.5f, 0.4f, 1)));
     const osg::Matrixd T = osg::Matrixd::scale(2, 2, 2) * osg::Matrixd::rotate(osg::DegreesToRadians(40.0), 0, 0, 1)
                          * osg::Matrixd::translate(100, -50, 20);
     osg::ref_ptr<osg::MatrixTransform> moved = new osg::MatrixTransform(T);
@@ -112,7 +108,7 @@ TEST(RenderBodies, ATransformedWaterHoldsToTheOpticsMirror)
     ASSERT_TRUE(allFinite(img.get()));
 
     const MirrorComparison m = compareFlatWaterWithOptics(h, img.get(), *water->getSettings(), osg::Matrixd::inverse(T),
-                                                          0.0, -depth, osg::Vec3(0.6f, 0.5f, 0.4f), 7);
+                                                          0.0, -depth, kBedGrey, 7);
     EXPECT_FALSE(m.bedMissed);
     EXPECT_GT(m.checked, 100);
     EXPECT_LT(m.worst, 0.01) << "8-bit pass textures: tolerance 0.01";

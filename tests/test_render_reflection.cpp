@@ -107,11 +107,10 @@ TEST_P(RenderWaterModel, ShadedColourMatchesTheOpticsMirror)
     // per channel with the model's extinction and body colour
     Harness h(160, 120);
     REQUIRE_GL(h);
-    osg::ref_ptr<WaterNode> water = flatWater();
-    if (const WaterType* type = findWaterType(GetParam())) applyWaterType(*water->getSettings(), *type);
     const float depth = 1.5f;
-    water->addChild(emissiveQuad(osg::Vec3(-100, -100, -depth), osg::Vec3(100, -100, -depth),
-                                 osg::Vec3(100, 100, -depth), osg::Vec3(-100, 100, -depth), osg::Vec4(0.6f, 0.5f, 0.4f, 1)));
+    osg::ref_ptr<WaterNode> water = flatWaterOverBed(depth);
+    water->getSettings()->setFovExtension(1.5f, 1.5f, 10.0f);
+    if (const WaterType* type = findWaterType(GetParam())) applyWaterType(*water->getSettings(), *type);
     h.setScene(water.get());
     const osg::Vec3d eye(0, -3, 2.5);
     h.lookAt(eye, osg::Vec3d(0, 8, -1.5));
@@ -120,7 +119,7 @@ TEST_P(RenderWaterModel, ShadedColourMatchesTheOpticsMirror)
     ASSERT_TRUE(allFinite(img.get()));
 
     const MirrorComparison m = compareFlatWaterWithOptics(h, img.get(), *water->getSettings(), osg::Matrixd(), 0.0,
-                                                          -depth, osg::Vec3(0.6f, 0.5f, 0.4f), 7);
+                                                          -depth, kBedGrey, 7);
     EXPECT_FALSE(m.bedMissed);
     EXPECT_GT(m.checked, 100);
     EXPECT_LT(m.worst, 0.01) << "8-bit pass textures: tolerance 0.01";

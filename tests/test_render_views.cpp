@@ -169,13 +169,9 @@ TEST(RenderViews, PassTargetsScaledToTheViewShadeFlatWaterAsTheOpticsMirrorDoes)
     // squares, where 0.01 holds) moves the bottom, so the path under water, by up to a texel
     Harness h(200, 100);
     REQUIRE_GL(h);
-    osg::ref_ptr<WaterNode> water = new WaterNode;
-    water->getSurface()->setWaves({});
-    water->getSurface()->setSize(400.0f);
+    osg::ref_ptr<WaterNode> water = flatWaterOverBed(1.5f);
     water->getSettings()->setAttenuation(0.3f);
     water->getSettings()->setPassTargetScale(1.0f);
-    water->addChild(emissiveQuad(osg::Vec3(-100, -100, -1.5f), osg::Vec3(100, -100, -1.5f), osg::Vec3(100, 100, -1.5f),
-                                 osg::Vec3(-100, 100, -1.5f), osg::Vec4(0.6f, 0.5f, 0.4f, 1)));
     h.setScene(water.get());
     h.lookAt(osg::Vec3d(0, -3, 2.5), osg::Vec3d(0, 8, -1.5));
     h.frame(0.0);
@@ -189,7 +185,7 @@ TEST(RenderViews, PassTargetsScaledToTheViewShadeFlatWaterAsTheOpticsMirrorDoes)
     }
     osg::ref_ptr<osg::Image> img = h.readColor();
     const MirrorComparison m = compareFlatWaterWithOptics(h, img.get(), *water->getSettings(), osg::Matrixd::identity(),
-                                                          0.0, -1.5, osg::Vec3(0.6f, 0.5f, 0.4f), 5);
+                                                          0.0, -1.5, kBedGrey, 5);
     EXPECT_FALSE(m.bedMissed);
     EXPECT_GT(m.checked, 100);
     EXPECT_LT(m.worst, 0.02);
