@@ -50,6 +50,7 @@ bool ViewPasses::matchesSizes(const osg::Vec2i& reflectionSize, const osg::Vec2i
 
 void ViewPasses::setTimingEnabled(bool on)
 {
+    if (on == _timing) return; // called every frame
     _timing = on;
     _reflectionTimer->setEnabled(on);
     _refractionTimer->setEnabled(on);

@@ -90,17 +90,32 @@ double WaterNode::getPassMilliseconds(osg::Camera* camera, PassId pass) const
     }
 }
 
+namespace {
+
+// the statistics' attribute names of each row, made once ("" for a row without a GPU time of its own)
+struct PassStatNames {
+    std::string ran[PASS_COUNT], gpuMs[PASS_COUNT];
+    PassStatNames()
+    {
+        for (int i = 0; i < PASS_COUNT; ++i) {
+            ran[i] = std::string("osgWater ") + passRow(PassId(i)).name + " ran";
+            if (const char* label = gpuTimeLabel(PassId(i))) gpuMs[i] = std::string("osgWater ") + label + " GPU ms";
+        }
+    }
+};
+
+}
+
 void WaterNode::recordPassStats(osgUtil::CullVisitor& cv, const ViewFrame& v, const PassPlan& plan) const
 {
+    static const PassStatNames names;
     osg::View* view = cv.getCurrentCamera()->getView();
     osg::Stats* stats = view ? view->getStats() : nullptr;
     if (!stats) return;
     for (int i = 0; i < PASS_COUNT; ++i) {
-        const PassId id = PassId(i);
-        stats->setAttribute(v.frameNumber, std::string("osgWater ") + passRow(id).name + " ran", plan.runs(id) ? 1.0 : 0.0);
-        const char* label = gpuTimeLabel(id);
-        const double ms = label ? getPassMilliseconds(cv.getCurrentCamera(), id) : -1.0;
-        if (ms >= 0.0) stats->setAttribute(v.frameNumber, std::string("osgWater ") + label + " GPU ms", ms);
+        stats->setAttribute(v.frameNumber, names.ran[i], plan.runs(PassId(i)) ? 1.0 : 0.0);
+        const double ms = names.gpuMs[i].empty() ? -1.0 : getPassMilliseconds(cv.getCurrentCamera(), PassId(i));
+        if (ms >= 0.0) stats->setAttribute(v.frameNumber, names.gpuMs[i], ms);
     }
 }
 
