@@ -48,8 +48,11 @@ GlowPasses::GlowPasses(osg::Group* scene, osg::StateSet* sceneState, osg::StateS
     // its viewport follows the highlight every frame: OSG must not draw it while the next cull writes
     _highlight->getOrCreateStateSet()->setDataVariance(osg::Object::DYNAMIC);
 
+    // occluders write depth only: the depth program places them exactly as the scene program does
+    // (and clips them alike) without its per-vertex lighting
     _occluderState = new osg::StateSet;
     _occluderState->setAttribute(new osg::ColorMask(false, false, false, false));
+    _occluderState->setAttribute(createProgram("osgWater.depth", "depth.vert", "depth.frag"));
     _glowState = new osg::StateSet;
     _glowState->setAttribute(createProgram("osgWater.glow", "water.vert", "glow.frag"));
     _glowState->addUniform(new osg::Uniform("osgWater_EyeLocal", osg::Vec3f()));
@@ -146,15 +149,12 @@ std::vector<float> GlowPasses::blurWeights(float radius)
 namespace {
 
 // The highlight: view directions within theta of the flat water's mirror direction of the sun v
-// (eye space), theta the width of pow(R.E, e) above 1/1024 widened by twice the steepest wave slope.
+// (eye space), theta the width of pow(R.E, e) above 1/1024 widened by twice the steepest slope the
+// waves can reach (a normal tilted by a turns the mirror direction by 2a).
 double highlightCone(const PassContext& ctx, const WaterSurface& surface, osg::Vec3d& v)
 {
     const WaterSettings& s = *ctx.settings;
-    double slope = 1.0; // a user mesh: normals up to 45 degrees
-    if (surface.usesGrid()) {
-        slope = 0.0;
-        for (const Wave& w : surface.getWaves()) slope += std::fabs(double(w.amplitude) * w.wavenumber());
-    }
+    const double slope = surface.getMaxSlope();
     const double lobe = std::acos(std::pow(1.0 / 1024.0, 1.0 / double(s.getGlowExponent())));
     const osg::Vec3d L = s.getSunDirection();
     v = osg::Matrixd::transform3x3(osg::Vec3d(L.x(), L.y(), -L.z()), ctx.view);

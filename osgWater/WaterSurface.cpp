@@ -156,6 +156,27 @@ double WaterSurface::getMaxPhaseSpeed() const
     return c;
 }
 
+double WaterSurface::getMaxSlope() const
+{
+    if (!usesGrid()) return 1.0;
+    double total = 0.0, best = 0.0;
+    for (const Wave& w : _waves) total += std::fabs(double(w.amplitude)) * w.wavenumber();
+    const int n = 720;
+    for (int i = 0; i < n; ++i) {
+        const double psi = osg::PI * i / n; // u and -u give the same sum
+        const double ux = std::cos(psi), uy = std::sin(psi);
+        double along = 0.0;
+        for (const Wave& w : _waves) {
+            osg::Vec2d d(w.direction.x(), w.direction.y());
+            if (!(d.normalize() > 0.0)) continue;
+            along += std::fabs(double(w.amplitude)) * w.wavenumber() * std::fabs(d.x() * ux + d.y() * uy);
+        }
+        best = std::max(best, along);
+    }
+    // between two sampled directions the sum rises at most total * (half the step)
+    return std::min(total, best + total * 0.5 * osg::PI / n);
+}
+
 float WaterSurface::getMaxAmplitude() const
 {
     if (_userMesh.valid()) {

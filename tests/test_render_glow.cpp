@@ -105,6 +105,30 @@ TEST(Glow, ChangesOnlyPixelsNearTheHighlight)
     EXPECT_GE(minGain, -1e-6f) << "glow only adds light";
 }
 
+TEST(Glow, AnObjectInFrontOfTheHighlightHidesIt)
+{
+    Harness h(200, 150);
+    REQUIRE_GL(h);
+    osg::ref_ptr<WaterNode> water = sunnyWater(osg::Vec3(0.0f, 0.866f, 0.5f));
+    // a wall 3 m ahead over the left half of the view (x < 0; the eye looks along +y from x = 0):
+    // the highlight (5.2 m ahead) shows only right of the view's centre
+    water->addChild(emissiveQuad(osg::Vec3(-50, 3, -2), osg::Vec3(0, 3, -2), osg::Vec3(0, 3, 20), osg::Vec3(-50, 3, 20),
+                                 osg::Vec4(0.2f, 0.2f, 0.2f, 1)));
+    Pair p = renderPair(h, water.get());
+    ASSERT_TRUE(p.drawn);
+    ASSERT_TRUE(p.highlight.valid());
+    int left = 0, right = 0;
+    for (int j = 0; j < p.highlight->t(); ++j)
+        for (int i = 0; i < p.highlight->s(); ++i) {
+            const float* v = pixel(p.highlight.get(), i, j);
+            if (std::max(v[0], std::max(v[1], v[2])) <= 1.0f / 1024.0f) continue;
+            if (i < p.highlight->s() / 2 - 1) ++left;
+            if (i > p.highlight->s() / 2 + 1) ++right;
+        }
+    EXPECT_GT(right, 0) << "the highlight right of the wall";
+    EXPECT_EQ(left, 0) << "the highlight behind the wall";
+}
+
 TEST(Glow, NothingWhenTheSunIsBehindTheViewer)
 {
     Harness h(200, 150);

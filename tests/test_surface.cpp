@@ -54,6 +54,49 @@ TEST(Surface, MaxAmplitudeBoundsTheHeight)
     EXPECT_GE(bb.zMax(), 2.0f + a - 1e-5f);
 }
 
+TEST(Surface, MaxSlopeBoundsTheGradientAndIsTightForSimpleWaves)
+{
+    osg::ref_ptr<WaterSurface> s = new WaterSurface;
+    auto wave = [](float dx, float dy, float length, float a) {
+        Wave w;
+        w.direction.set(dx, dy);
+        w.wavelength = length;
+        w.amplitude = a;
+        return w;
+    };
+    const double c = 0.05 * 2.0 * osg::PI / 4.0; // a k of a 4 m wave 5 cm high
+    s->setWaves({ wave(1, 0, 4, 0.05f) });
+    EXPECT_NEAR(s->getMaxSlope(), c, 0.01 * c) << "one wave: a k";
+    s->setWaves({ wave(1, 0, 4, 0.05f), wave(1, 0, 4, 0.05f) });
+    EXPECT_NEAR(s->getMaxSlope(), 2 * c, 0.01 * c) << "parallel: the sum";
+    s->setWaves({ wave(1, 0, 4, 0.05f), wave(0, 1, 4, 0.05f) });
+    EXPECT_NEAR(s->getMaxSlope(), std::sqrt(2.0) * c, 0.01 * c) << "crossed: both at their peaks, sqrt 2 a k";
+
+    // the default waves: every gradient on a fine sampling of space and time stays within the bound
+    s = new WaterSurface;
+    const double bound = s->getMaxSlope();
+    double sum = 0.0, steepest = 0.0;
+    for (const Wave& w : s->getWaves()) sum += w.amplitude * w.wavenumber();
+    for (double t = 0.0; t < 20.0; t += 1.3)
+        for (double x = -20.0; x < 20.0; x += 0.23)
+            for (double y = -20.0; y < 20.0; y += 0.29) {
+                const osg::Vec3d n = s->normal(x, y, t);
+                steepest = std::max(steepest, std::sqrt(n.x() * n.x() + n.y() * n.y()) / n.z());
+            }
+    EXPECT_LE(steepest, bound);
+    EXPECT_LE(bound, sum) << "never looser than the sum of the slopes";
+    osg::ref_ptr<osg::Geometry> mesh = new osg::Geometry;
+    osg::ref_ptr<osg::Vec3Array> v = new osg::Vec3Array;
+    v->push_back(osg::Vec3(0, 0, 0));
+    v->push_back(osg::Vec3(1, 0, 0));
+    v->push_back(osg::Vec3(0, 1, 0));
+    mesh->setVertexArray(v.get());
+    mesh->addPrimitiveSet(new osg::DrawArrays(GL_TRIANGLES, 0, 3));
+    s->setMesh(mesh.get());
+    ASSERT_FALSE(s->usesGrid());
+    EXPECT_EQ(s->getMaxSlope(), 1.0) << "a user mesh: 45 degrees";
+}
+
 TEST(Surface, NormalsAreTheAnalyticGradient)
 {
     osg::ref_ptr<WaterSurface> s = new WaterSurface;
