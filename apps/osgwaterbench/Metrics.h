@@ -55,6 +55,9 @@ struct CausticsErrors {
     double meanReference = relativeRmse, meanRendered = relativeRmse;
 };
 //! Both images summed over blocks x blocks texels, RMSE over blocks that either lights, / mean reference.
+//! The side of the blocks the caustics are compared on, in metres on the sun's window: about
+//! 4 texels of the default lake's caustics (1.2 m; its texels are 0.29 m).
+constexpr double kCausticsBlockMetres = 1.2;
 CausticsErrors measureCaustics(const PhotonImage& reference, const osg::Image* rendered, int block);
 
 }

@@ -52,6 +52,9 @@ nlohmann::json toJson(const Record& r)
     j["coverage_mismatch"] = r.coverageMismatch;
     j["caustics_rel_rmse"] = number(r.causticsErrors.relativeRmse);
     j["caustics_reference_noise"] = number(r.causticsErrors.referenceNoise);
+    // the blocks' means: a bias shows as a difference, noise and blur only in the RMSE
+    j["caustics_mean_reference"] = number(r.causticsErrors.meanReference);
+    j["caustics_mean_rendered"] = number(r.causticsErrors.meanRendered);
     j["nan_pixels"] = r.nanPixels;
     return j;
 }
@@ -291,9 +294,9 @@ bool writeDocs(const std::string& dir, const RunInfo& info, const std::vector<Re
            << "the median over rounds of the round's mean frame time. Ratio: over the plain scene, median over the "
            << "views with water in view and the eye above it. An effect's cost: everything on over the effect off, "
            << "less 1, median over the views where the effect's passes ran (caustics: the views whose frames rendered "
-           << "them; glow: those with the highlight in view); for the skips, negative: what skipping saves. Caustics gather: " << ablation->gather << " in every "
+           << "them; glow: those with the highlight in view); for the skips and the caustics' focus (caustics unfocused), negative: what they save. Caustics gather: " << ablation->gather << " in every "
            << "configuration (the automatic choice for the default). Errors of the same settings: the techniques' table "
-           << "(caustics-off, glow-off, quality-fast, quality-exact).\n\n"
+           << "(caustics-off, caustics-unfocused, glow-off, quality-fast, quality-exact).\n\n"
            << "| configuration | ratio | frame ms | everything on ÷ this − 1 | over views |\n|---|---|---|---|---|\n";
         for (const AblationSummary::Row& r : abl.rows)
             md << "| " << r.config << " | " << fmt(r.ratio, 2, "×") << " | " << fmt(r.frameMs, 1) << " | "
@@ -317,8 +320,9 @@ bool writeDocs(const std::string& dir, const RunInfo& info, const std::vector<Re
        << "refraction texture shows at the pixel and the exact refracted hit, in metres and in screen "
        << "pixels (the offset on screen that, to first order, moves the exact hit onto the shown point). "
        << "Reflection error: the lookup point against the mirror ray's exact hit, in reflection-texture "
-       << "texels. Caustics: relative RMSE of the caustics texture against photon tracing (4×4-texel "
-       << "blocks; the reference's own counting noise in brackets).\n\n"
+       << "texels. Caustics: relative RMSE of the caustics texture against photon tracing (blocks of "
+       << "texels about 1.2 m on a side, whatever the texture's window and resolution; the reference's own "
+       << "counting noise in brackets).\n\n"
        << "| technique | ratio | frame ms | refr. px median | p95 | p99 | max | > 2 px | refr. m median "
           "| refl. texels median | p99 | Fresnel err. median | max | caustics RMSE | NaN px |\n"
        << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";

@@ -309,7 +309,11 @@ int main(int argc, char** argv)
                     it = photonImages.emplace(key, tracePhotons(sceneCaster, waterCaster, *surface, v.t,
                                                                 cc->getLighting().localToSun, base->getSunDirection(), ps)).first;
                 }
-                r.causticsErrors = measureCaustics(it->second, caustics.get(), std::max(1, cc->getResolution() / 128));
+                // blocks of one size on the bed whatever the window and resolution (a focused window
+                // has fewer texels of the same size): comparable across techniques
+                const double texelMetres = std::max(cc->getWindow().x(), cc->getWindow().y()) / cc->getResolution();
+                const int block = std::max(1, int(std::lround(kCausticsBlockMetres / texelMetres)));
+                r.causticsErrors = measureCaustics(it->second, caustics.get(), block);
             }
             std::printf("%-24s %-28s %8.1f ms  plain %6.1f ms  x%.2f  refraction px median %.3f p99 %.2f  NaN %zu"
                         "  (timing %.0f s, capture+reference %.0f s, metrics %.0f s)\n",
