@@ -101,19 +101,34 @@ bool CausticsCamera::needed(const Frame& f)
            && f.scene.zMin() < f.level;      // something under the water
 }
 
+osg::BoundingBox CausticsCamera::lightBox(const Frame& f, bool focused)
+{
+    const osg::BoundingBox& cut = focused && f.litWater.valid() ? f.litWater : f.scene;
+    osg::BoundingBox box = f.water;
+    box.xMin() = std::max(box.xMin(), cut.xMin());
+    box.yMin() = std::max(box.yMin(), cut.yMin());
+    box.xMax() = std::min(box.xMax(), cut.xMax());
+    box.yMax() = std::min(box.yMax(), cut.yMax());
+    if (!box.valid()) box = f.water;
+    box.zMin() = std::min(cut.zMin(), float(f.level) - 0.01f);
+    box.zMax() = float(f.level + f.clearance);
+    return box;
+}
+
+double CausticsCamera::focusRatio(const Frame& f)
+{
+    if (!f.settings || !f.settings->getCausticsFocused()) return 1.0;
+    auto side = [](const osg::BoundingBox& b) { return std::max(b.xMax() - b.xMin(), b.yMax() - b.yMin()); };
+    const double whole = side(lightBox(f, false));
+    return whole > 0.0 ? std::min(1.0, side(lightBox(f, true)) / whole) : 1.0;
+}
+
 void CausticsCamera::update(const Frame& f)
 {
     _depthDrawn = false; // a new frame
-    // what the sun sees of the water volume: the water's extent (cut to the scene's) from the
-    // deepest scene point up to just above the crests
-    osg::BoundingBox box = f.water;
-    box.xMin() = std::max(box.xMin(), f.scene.xMin());
-    box.yMin() = std::max(box.yMin(), f.scene.yMin());
-    box.xMax() = std::min(box.xMax(), f.scene.xMax());
-    box.yMax() = std::min(box.yMax(), f.scene.yMax());
-    if (!box.valid()) box = f.water;
-    box.zMin() = std::min(f.scene.zMin(), float(f.level) - 0.01f);
-    box.zMax() = float(f.level + f.clearance);
+    // what the sun sees of the water volume: where its light can land (or the water's extent cut
+    // to the scene's), from the deepest point there up to just above the crests
+    const osg::BoundingBox box = lightBox(f, f.settings->getCausticsFocused());
 
     const osg::Matrixd view = sunView(f.towardsSun, box);
     const osg::Matrixd proj = sunProjection(view, box);

@@ -197,3 +197,12 @@ bool nearPlaneReachesWater(const osg::Matrixd& modelView, const osg::Matrixd& pr
 }
 
 }
+
+int osgWater::focusedCount(int count, double ratio)
+{
+    const int floor = std::min(count, 32);
+    if (!(ratio > 0.0)) return floor; // also NaN
+    if (ratio >= 1.0) return count;
+    const int scaled = int(std::ceil(count * ratio / 8.0)) * 8;
+    return std::max(floor, std::min(count, scaled));
+}

@@ -4,7 +4,6 @@
 #include <osgUtil/CullVisitor>
 #include <osgUtil/IntersectionVisitor>
 #include <osgUtil/LineSegmentIntersector>
-#include <osg/ComputeBoundsVisitor>
 #include <OpenThreads/ScopedLock>
 #include <algorithm>
 #include <cmath>
@@ -444,17 +443,6 @@ int WaterNode::fitTexture(const char* what, int size, const CausticsSupport& sup
     return support.maxTextureSize;
 }
 
-const osg::BoundingBox& WaterNode::sceneBox(const osg::BoundingSphere& bs)
-{
-    if (bs.center() != _sceneBoxKey.center() || bs.radius() != _sceneBoxKey.radius()) {
-        _sceneBoxKey = bs;
-        osg::ComputeBoundsVisitor cbv;
-        for (unsigned int i = 0; i < getNumChildren(); ++i) getChild(i)->accept(cbv);
-        _sceneBox = cbv.getBoundingBox();
-    }
-    return _sceneBox;
-}
-
 void WaterNode::prepareCaustics(ViewFrame& v)
 {
     const WaterSettings& s = *_settings;
@@ -465,15 +453,21 @@ void WaterNode::prepareCaustics(ViewFrame& v)
         CausticsCamera::Frame f;
         f.towardsSun = s.getSunDirection();
         f.water = _surface->getBoundingBox();
-        f.scene = sceneBox(osg::Group::computeBound());
         f.level = _surface->getLevel();
         f.clearance = _surface->getMaxAmplitude() + s.getClipOffset();
+        _sceneBoxes.update(*this, osg::Group::computeBound(), f.water, f.level + f.clearance, f.towardsSun);
+        f.scene = _sceneBoxes.whole();
+        f.litWater = _sceneBoxes.litWater();
         f.surface = _surface.get();
         f.settings = &s;
         _causticsNeeded = CausticsCamera::needed(f);
         if (_causticsNeeded) {
-            const int resolution = fitTexture("causticsResolution", s.getCausticsResolution(), v.support);
-            const int grid = fitTexture("photonGridSize", s.getPhotonGridSize(), v.support);
+            // the focused window keeps the texel spacing the settings give the whole one, and the
+            // photons per texel exactly (a ratio off by a rounding makes a moire of 3s and 4s)
+            const int setResolution = fitTexture("causticsResolution", s.getCausticsResolution(), v.support);
+            const int setGrid = fitTexture("photonGridSize", s.getPhotonGridSize(), v.support);
+            const int resolution = focusedCount(setResolution, CausticsCamera::focusRatio(f));
+            const int grid = std::max(1, int(std::lround(double(setGrid) * resolution / setResolution)));
             if (!_caustics.valid() || !_caustics->matches(resolution, grid, v.support.floatTargets))
             {
                 _caustics = new CausticsCamera(this, _states.getSceneStateSet(), _states.getWaterStateSet(),

@@ -85,6 +85,7 @@ REGISTER_OBJECT_WRAPPER(osgWater_WaterSettings, new osgWater::WaterSettings, osg
     ADD_INT_SERIALIZER(PhotonGridSize, 512);
     ADD_PRECISE_FLOAT_SERIALIZER(CausticsIntensity, 1.0f);
     ADD_BOOL_SERIALIZER(CausticsFiltering, true);
+    ADD_BOOL_SERIALIZER(CausticsFocused, true);
     BEGIN_ENUM_SERIALIZER(CausticsGather, GATHER_AUTO);
         ADD_ENUM_VALUE(GATHER_AUTO);
         ADD_ENUM_VALUE(GATHER_POINTS_COPY);

@@ -270,3 +270,15 @@ TEST(PassMath, PassTargetsFollowTheViewportWhenScaled)
     EXPECT_EQ(passTargetSize(8192, 100, 1.0, 512), osg::Vec2i(4096, 100)) << "at most 4096";
     EXPECT_EQ(passTargetSize(1280, 720, NAN, 256), osg::Vec2i(256, 256));
 }
+
+TEST(PassMath, FocusedCountsKeepTheSpacing)
+{
+    EXPECT_EQ(focusedCount(512, 1.0), 512) << "the whole window: the set count";
+    EXPECT_EQ(focusedCount(512, 2.0), 512) << "never more than the set count";
+    EXPECT_EQ(focusedCount(512, 0.5), 256) << "half the window, half the count";
+    EXPECT_EQ(focusedCount(512, 0.546), 280) << "rounded up to a multiple of 8";
+    EXPECT_EQ(focusedCount(512, 0.01), 32) << "at least 32";
+    EXPECT_EQ(focusedCount(16, 0.01), 16) << "a set count under 32 is kept";
+    EXPECT_EQ(focusedCount(512, NAN), 32);
+    EXPECT_EQ(focusedCount(512, 0.0), 32);
+}

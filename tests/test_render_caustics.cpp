@@ -181,6 +181,56 @@ TEST(RenderCaustics, FlatWaterGivesTheTransmittedIrradianceEverywhere)
     }
 }
 
+TEST(RenderCaustics, FocusedOnTheLitWaterTheyKeepTheirSpacingWithFewerPhotons)
+{
+    // flat water over a bed at -2 m in a hole [-4, 4]^2 of a shore 1 m above the water, a floor at
+    // -6 m under it all: light lands only in the hole, about 8 of the water's 20 metres
+    const osg::Vec3 sun(0.3f, 0.2f, 0.93f);
+    osg::Vec3 L = sun;
+    L.normalize();
+    const double expected = flatIrradiance(L.z(), 2.0);
+    int grid[2] = { 0, 0 };
+    double area[2] = { 0, 0 };
+    for (bool focused : { false, true }) {
+        CausticsScene sc(20.0f, 64, 128, sun, -2.0f);
+        REQUIRE_GL(sc.h);
+        sc.water->removeChildren(0, sc.water->getNumChildren());
+        const osg::Vec4 white(1, 1, 1, 1);
+        auto quad = [&](float x0, float y0, float x1, float y1, float z) {
+            sc.water->addChild(emissiveQuad(osg::Vec3(x0, y0, z), osg::Vec3(x1, y0, z), osg::Vec3(x1, y1, z),
+                                            osg::Vec3(x0, y1, z), white));
+        };
+        quad(-4, -4, 4, 4, -2);
+        quad(-12, -12, -4, 12, 1);
+        quad(4, -12, 12, 12, 1);
+        quad(-4, -12, 4, -4, 1);
+        quad(-4, 4, 4, 12, 1);
+        quad(-12, -12, 12, 12, -6);
+        sc.water->getSettings()->setCausticsFocused(focused);
+        osg::ref_ptr<osg::Image> img = sc.render();
+        ASSERT_TRUE(img.valid()) << "no caustics pass ran";
+        grid[focused] = sc.water->getCausticsCamera()->getGridSize();
+        area[focused] = sc.texelArea(img.get());
+        double sum = 0, lo = 1e30, hi = -1e30;
+        int n = 0;
+        for (int j = 0; j < img->t(); ++j)
+            for (int i = 0; i < img->s(); ++i) {
+                const osg::Vec3d p = sc.bedPoint(img.get(), i, j);
+                if (std::fabs(p.x()) > 3 || std::fabs(p.y()) > 3) continue; // the bed, off its edges
+                const double c = value(img.get(), i, j);
+                sum += c;
+                lo = std::min(lo, c);
+                hi = std::max(hi, c);
+                ++n;
+            }
+        ASSERT_GT(n, 50) << "focused " << focused;
+        EXPECT_NEAR(sum / n, expected, 0.02 * expected) << "focused " << focused;
+        EXPECT_LE(hi - lo, 0.02 * expected) << "focused " << focused << ": min " << lo << " max " << hi;
+    }
+    EXPECT_LE(grid[1], 0.6 * grid[0]) << "photons only where light can land: " << grid[1] << " against " << grid[0];
+    EXPECT_NEAR(area[1], area[0], 0.25 * area[0]) << "the texel's size on the bed is kept";
+}
+
 TEST(RenderCaustics, LensBumpFocusesAtTheAnalyticFocusAndConservesEnergy)
 {
     // Paraxial focus of a refracting surface of apex curvature radius r = s^2 / h0 (air -> water):

@@ -49,6 +49,7 @@ osg::ref_ptr<WaterNode> pond()
     s->setRefractionCameraRotation(false);
     s->setReflectionEnabled(false);
     s->setPhotonGridSize(128);
+    s->setCausticsFocused(false);
     s->setCausticsGather(WaterSettings::GATHER_CPU);
     s->setUnderwaterModel(WaterSettings::UNDERWATER_THESIS);
     s->setGlowEnabled(false);
@@ -100,6 +101,7 @@ TEST(Serialization, ExpectedTextReadsBackIntoTheSameNode)
     EXPECT_FALSE(s->getReflectionEnabled());
     EXPECT_TRUE(s->getRefractionEnabled());
     EXPECT_EQ(s->getPhotonGridSize(), 128);
+    EXPECT_FALSE(s->getCausticsFocused());
     EXPECT_EQ(s->getCausticsGather(), WaterSettings::GATHER_CPU);
     EXPECT_EQ(s->getCausticsResolution(), 256); // absent: default
     EXPECT_EQ(s->getUnderwaterModel(), WaterSettings::UNDERWATER_THESIS);

@@ -24,6 +24,7 @@ TEST(Settings, DefaultsAreThesisTable1)
     EXPECT_NEAR(s->getAirIOR() / s->getWaterIOR(), 0.75f, 1e-3f); // the shader's 0.75
     EXPECT_EQ(s->getCausticsResolution(), 256);                     // thesis §9.2
     EXPECT_TRUE(s->getCausticsFiltering());                         // "with enabled filtering"
+    EXPECT_TRUE(s->getCausticsFocused());                           // the passes cover only the lit water
     EXPECT_FLOAT_EQ(s->getGlowExponent(), 200.0f);                  // thesis §9.3 pow(R.E, 200)
     EXPECT_FLOAT_EQ(s->getGlowRadius(), 3.0f);                      // thesis's 7x7 filter
     EXPECT_FLOAT_EQ(s->getGlowResolution(), 0.25f);                 // 1/4 per axis

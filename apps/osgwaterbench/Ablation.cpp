@@ -20,6 +20,7 @@ std::vector<AblationConfig> ablationConfigs()
         { "reflection off", "reflection", [](WaterSettings& s, WaterNode&) { s.setReflectionEnabled(false); } },
         { "refraction off", "refraction", [](WaterSettings& s, WaterNode&) { s.setRefractionEnabled(false); } },
         { "skips off", "skips", [](WaterSettings&, WaterNode& w) { w.setSkippingEnabled(false); } },
+        { "caustics unfocused", "caustics", [](WaterSettings& s, WaterNode&) { s.setCausticsFocused(false); } },
         { "surface only", "", [](WaterSettings& s, WaterNode&) {
              s.setCausticsEnabled(false);
              s.setGlowEnabled(false);

@@ -28,6 +28,7 @@ std::vector<Technique> allTechniques()
     t.push_back({ "fresnel-power", [](WaterSettings& s) { s.setFresnelModel(WaterSettings::FRESNEL_POWER); } });
     t.push_back({ "fresnel-exact", [](WaterSettings& s) { s.setFresnelModel(WaterSettings::FRESNEL_EXACT); } });
     t.push_back({ "caustics-off", [](WaterSettings& s) { s.setCausticsEnabled(false); } });
+    t.push_back({ "caustics-unfocused", [](WaterSettings& s) { s.setCausticsFocused(false); } });
     const std::pair<const char*, WaterSettings::CausticsGather> gathers[] = {
         { "caustics-cpu", WaterSettings::GATHER_CPU },
         { "caustics-points-copy", WaterSettings::GATHER_POINTS_COPY },
