@@ -55,6 +55,40 @@ float fresnelPower(float cosE, float q)
     return std::pow(1.0f - std::min(std::max(cosE, 0.0f), 1.0f), q);
 }
 
+float fresnelReciprocal(float cosE, float p)
+{
+    return 1.0f / std::pow(1.0f + std::min(std::max(cosE, 0.0f), 1.0f), p);
+}
+
+FitError reciprocalFresnelError(double p, float n1, float n2, int samples)
+{
+    FitError e;
+    samples = std::max(samples, 1);
+    for (int i = 0; i <= samples; ++i) {
+        const double angle = 0.5 * 3.14159265358979323846 * i / samples;
+        const float c = float(std::cos(angle));
+        const double d = std::fabs(double(fresnelReciprocal(c, float(p))) - fresnelExact(c, n1, n2));
+        e.max = std::max(e.max, d);
+        e.rms += d * d;
+    }
+    e.rms = std::sqrt(e.rms / (samples + 1));
+    return e;
+}
+
+double bestReciprocalPower(float n1, float n2, bool leastMax)
+{
+    double best = 1.0, bestError = 1e30;
+    for (int k = 100; k <= 3200; ++k) {
+        const FitError e = reciprocalFresnelError(k / 100.0, n1, n2);
+        const double v = leastMax ? e.max : e.rms;
+        if (v < bestError) {
+            bestError = v;
+            best = k / 100.0;
+        }
+    }
+    return best;
+}
+
 float fresnelExact(float cosI, float n1, float n2)
 {
     const float ci = std::min(std::max(cosI, 0.0f), 1.0f);
@@ -69,6 +103,7 @@ float fresnelExact(float cosI, float n1, float n2)
 
 float fresnelModel(int model, float cosE, float n1, float n2, float q)
 {
+    if (model == 3) return fresnelReciprocal(cosE, q);
     if (model == 2) return fresnelExact(cosE, n1, n2);
     if (model == 1) return fresnelPower(cosE, q);
     return fresnelSchlick(cosE, normalReflectance(n1, n2), q);

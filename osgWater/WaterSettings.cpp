@@ -40,7 +40,7 @@ WaterSettings::WaterSettings()
     : _airIOR(1.0f), _waterIOR(1.333f),
       _waterColor(0.0f, 0.2f, 0.1f), _attenuation(0.5f), _waterModel(WATER_THESIS),
       _absorption(defaultAbsorption()), _scattering(defaultScattering()), _backscattering(defaultBackscattering()),
-      _fresnelModel(FRESNEL_SCHLICK), _fresnelExponent(5.0f),
+      _fresnelModel(FRESNEL_SCHLICK), _fresnelExponent(5.0f), _fresnelReciprocalPower(6.62f),
       _reflectionScale(1.0f),
       _refractionLookup(ITERATIVE), _searchSteps(3), _searchTolerance(0.01f),
       _oneStepScale(1.0f), _oneStepMaxDepth(20.0f), _underwaterLookupScale(1.5f),
@@ -74,7 +74,8 @@ WaterSettings::WaterSettings(const WaterSettings& o, const osg::CopyOp& copyop)
       _airIOR(o._airIOR), _waterIOR(o._waterIOR), _waterColor(o._waterColor), _attenuation(o._attenuation),
       _waterModel(o._waterModel), _absorption(o._absorption), _scattering(o._scattering),
       _backscattering(o._backscattering),
-      _fresnelModel(o._fresnelModel), _fresnelExponent(o._fresnelExponent), _reflectionScale(o._reflectionScale),
+      _fresnelModel(o._fresnelModel), _fresnelExponent(o._fresnelExponent),
+      _fresnelReciprocalPower(o._fresnelReciprocalPower), _reflectionScale(o._reflectionScale),
       _refractionLookup(o._refractionLookup), _searchSteps(o._searchSteps), _searchTolerance(o._searchTolerance),
       _oneStepScale(o._oneStepScale), _oneStepMaxDepth(o._oneStepMaxDepth),
       _underwaterLookupScale(o._underwaterLookupScale),
@@ -111,7 +112,7 @@ void WaterSettings::setWaterModel(WaterModel m) { _waterModel = validEnum("water
 void WaterSettings::setAbsorption(const osg::Vec3& a) { _absorption = clampColor("absorption", a, defaultAbsorption(), 100.0f); touch(); }
 void WaterSettings::setScattering(const osg::Vec3& b) { _scattering = clampColor("scattering", b, defaultScattering(), 100.0f); touch(); }
 void WaterSettings::setBackscattering(const osg::Vec3& bb) { _backscattering = clampColor("backscattering", bb, defaultBackscattering(), 100.0f); touch(); }
-void WaterSettings::setFresnelModel(FresnelModel m) { _fresnelModel = validEnum("fresnelModel", m, FRESNEL_EXACT, FRESNEL_SCHLICK); touch(); }
+void WaterSettings::setFresnelModel(FresnelModel m) { _fresnelModel = validEnum("fresnelModel", m, FRESNEL_RECIPROCAL, FRESNEL_SCHLICK); touch(); }
 void WaterSettings::setRefractionLookup(RefractionLookup l) { _refractionLookup = validEnum("refractionLookup", l, ITERATIVE, ITERATIVE); touch(); }
 void WaterSettings::setUnderwaterModel(UnderwaterModel m) { _underwaterModel = validEnum("underwaterModel", m, UNDERWATER_THESIS, UNDERWATER_PHYSICAL); touch(); }
 void WaterSettings::setCausticsGather(CausticsGather g) { _causticsGather = validEnum("causticsGather", g, GATHER_CPU, GATHER_AUTO); touch(); }
@@ -120,6 +121,26 @@ void WaterSettings::setWaterIOR(float v) { _waterIOR = clampOr("waterIOR", v, 1.
 void WaterSettings::setWaterColor(const osg::Vec3& c) { _waterColor = clampColor("waterColor", c, osg::Vec3(0.0f, 0.2f, 0.1f), 1.0f); touch(); }
 void WaterSettings::setAttenuation(float k) { _attenuation = clampOr("attenuation", k, 0.0f, 100.0f, 0.5f); touch(); }
 void WaterSettings::setFresnelExponent(float q) { _fresnelExponent = clampOr("fresnelExponent", q, 0.1f, 64.0f, 5.0f); touch(); }
+void WaterSettings::setFresnelReciprocalPower(float p) { _fresnelReciprocalPower = clampOr("fresnelReciprocalPower", p, 1.0f, 32.0f, 6.62f); touch(); }
+
+namespace {
+const char* const kFresnelNames[] = { "schlick", "power", "exact", "reciprocal" }; // in FresnelModel's order
+}
+
+const char* WaterSettings::fresnelModelName(FresnelModel m)
+{
+    return m >= FRESNEL_SCHLICK && m <= FRESNEL_RECIPROCAL ? kFresnelNames[m] : "schlick";
+}
+
+bool WaterSettings::fresnelModelFromName(const std::string& name, FresnelModel& m)
+{
+    for (int i = FRESNEL_SCHLICK; i <= FRESNEL_RECIPROCAL; ++i)
+        if (name == kFresnelNames[i]) {
+            m = FresnelModel(i);
+            return true;
+        }
+    return false;
+}
 void WaterSettings::setReflectionScale(float c) { _reflectionScale = clampOr("reflectionScale", c, 0.0f, 1000.0f, 1.0f); touch(); }
 void WaterSettings::setSearchSteps(int n) { _searchSteps = clampInt("searchSteps", n, 1, 8); touch(); }
 void WaterSettings::setSearchTolerance(float m) { _searchTolerance = clampOr("searchTolerance", m, 0.0f, 10.0f, 0.01f); touch(); }

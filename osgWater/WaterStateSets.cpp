@@ -90,7 +90,7 @@ void WaterStateSets::applySettings(const WaterSettings& s, const WaterSurface& s
     w->getUniform("osgWater_WaterColor")->set(s.getBodyColor());
     w->getUniform("osgWater_Extinction")->set(s.getViewExtinction());
     w->getUniform("osgWater_PhotonExtinction")->set(photonExtinction(s));
-    w->getUniform("osgWater_FresnelQ")->set(s.getFresnelExponent());
+    w->getUniform("osgWater_FresnelQ")->set(s.getFresnelModelExponent());
     w->getUniform("osgWater_ReflectionScale")->set(s.getReflectionScale());
     w->getUniform("osgWater_UnderwaterScale")->set(s.getUnderwaterLookupScale());
     w->getUniform("osgWater_SearchSteps")->set(s.getSearchSteps());
@@ -114,8 +114,7 @@ void WaterStateSets::applySettings(const WaterSettings& s, const WaterSurface& s
 
     setDefineIf(w, "OSGWATER_GRID", surface.usesGrid());
     setDefineIf(w, "OSGWATER_ONE_STEP", s.getRefractionLookup() == WaterSettings::ONE_STEP);
-    w->setDefine("OSGWATER_FRESNEL", s.getFresnelModel() == WaterSettings::FRESNEL_EXACT ? "2"
-                                     : s.getFresnelModel() == WaterSettings::FRESNEL_POWER ? "1" : "0");
+    w->setDefine("OSGWATER_FRESNEL", std::to_string(int(s.getFresnelModel()))); // the enum's numbers
     w->setDefine("OSGWATER_UNDERWATER", s.getUnderwaterModel() == WaterSettings::UNDERWATER_THESIS ? "1" : "0");
     // OSGWATER_NO_REFLECTION / OSGWATER_NO_REFRACTION follow what ran (ViewPasses), not the settings
     if (debug == DEBUG_NONE) w->removeDefine("OSGWATER_DEBUG");

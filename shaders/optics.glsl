@@ -26,6 +26,12 @@ float owFresnelPower(float cosE, float q)
     return pow(1.0 - clamp(cosE, 0.0, 1.0), q);
 }
 
+// DeepWater's reciprocal power: 1 at grazing incidence, 2^-p at normal incidence
+float owFresnelReciprocal(float cosE, float p)
+{
+    return 1.0 / pow(1.0 + clamp(cosE, 0.0, 1.0), p);
+}
+
 float owFresnelExact(float cosI, float n1, float n2)
 {
     float ci = clamp(cosI, 0.0, 1.0);
@@ -38,11 +44,14 @@ float owFresnelExact(float cosI, float n1, float n2)
     return 0.5 * (rs * rs + rp * rp);
 }
 
-// The Fresnel model chosen by OSGWATER_FRESNEL (0 Schlick eq. 7-8, 1 power, 2 exact);
-// the includer lists OSGWATER_FRESNEL in its import_defines.
+// The Fresnel model chosen by OSGWATER_FRESNEL (WaterSettings::FresnelModel: 0 Schlick eq. 7-8,
+// 1 power, 2 exact, 3 reciprocal power); q: the model's exponent. The includer lists
+// OSGWATER_FRESNEL in its import_defines.
 float owFresnel(float cosE, float n1, float n2, float q)
 {
-#if defined(OSGWATER_FRESNEL) && OSGWATER_FRESNEL == 2
+#if defined(OSGWATER_FRESNEL) && OSGWATER_FRESNEL == 3
+    return owFresnelReciprocal(cosE, q);
+#elif defined(OSGWATER_FRESNEL) && OSGWATER_FRESNEL == 2
     return owFresnelExact(cosE, n1, n2);
 #elif defined(OSGWATER_FRESNEL) && OSGWATER_FRESNEL == 1
     return owFresnelPower(cosE, q);

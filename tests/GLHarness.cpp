@@ -294,7 +294,8 @@ MirrorComparison compareFlatWaterWithOptics(Harness& h, const osg::Image* img, c
             if (!optics::intersectPlaneZ(u, R, float(bedZ), X)) { r.bedMissed = true; continue; }
             const glm::vec3 refr = optics::waterTint(bedColour, glm::vec3(body.x(), body.y(), body.z()),
                                                      optics::attenuation(glm::vec3(k.x(), k.y(), k.z()), glm::length(X - u)));
-            const float F = optics::fresnelSchlick(-I.z, s.getNormalReflectance(), s.getFresnelExponent());
+            const float F = optics::fresnelModel(int(s.getFresnelModel()), -I.z, s.getAirIOR(), s.getWaterIOR(),
+                                                 s.getFresnelModelExponent());
             const glm::vec3 expect = optics::fresnelMix(refr, sky, F);
             const float* c = pixel(img, x, y);
             for (int i = 0; i < 3; ++i) r.worst = std::max(r.worst, double(std::fabs(c[i] - expect[i])));

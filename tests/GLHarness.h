@@ -127,7 +127,7 @@ osg::ref_ptr<osgWater::WaterNode> flatWaterOverBed(float depth);
 //! The Optics mirror against a rendered image of flat water at `level` over a uniform emissive bed
 //! of colour `bed` at `bedZ`, with the clear colour (the sky) reflected: each `step`-th pixel whose
 //! ray, taken into the water's frame by `toWater`, meets the surface at a U that `keep` accepts is
-//! compared with eq. 9 of eq. 5 along the exact refracted path (Schlick Fresnel, the settings'
+//! compared with eq. 9 of eq. 5 along the exact refracted path (the settings' Fresnel model and water
 //! model per channel, the path in the water's metres). Rays within 0.05 of level are left out.
 struct MirrorComparison {
     int checked = 0;      //!< pixels compared

@@ -237,3 +237,20 @@ TEST(Osgwaterbench, MissingSceneFileIsAClearErrorAndNonZeroExit)
     const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     EXPECT_NE(text.find("scene file /nonexistent.osgt not found"), std::string::npos) << text;
 }
+
+TEST(Osgwaterbench, FresnelFigureStatesTheFittedPowersAndEachCandidatesError)
+{
+    // the tool behind docs/FRESNEL.md: the fitted powers (held to the exact curve by
+    // Optics.TheReciprocalPowerFitsWaterAsTheDeepWaterPaperFound) and a table row per candidate; the
+    // errors below were worked out apart from the kit, in double precision over the same 901 angles
+    const std::string dir = std::string(OSGWATER_TEST_TMP) + "/fresnel-figure";
+    std::remove((dir + "/FRESNEL.md").c_str());
+    const std::string cmd = std::string("'") + OSGWATER_BENCH_APP + "' --fresnel-figure '" + dir + "' > '" + dir + ".log' 2>&1";
+    ASSERT_EQ(std::system(cmd.c_str()), 0) << "see " << dir << ".log";
+    std::ifstream in(dir + "/FRESNEL.md");
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    EXPECT_NE(text.find("least largest error: **p = 6.62**"), std::string::npos) << text;
+    EXPECT_NE(text.find("least RMS error: **p = 6.65**"), std::string::npos) << text;
+    for (const char* row : { "| 1/(1+E.N)^4 | 0.1865 |", "| Schlick, q = 5 | 0.0592 |", "| 1/(1+E.N)^6.62 (least max error) | 0.0102 |" })
+        EXPECT_NE(text.find(row), std::string::npos) << row << "\n" << text;
+}

@@ -1,5 +1,7 @@
 // Optics (the CPU mirror of shaders/optics.glsl) against closed forms and hard cases.
 #include <osgWater/Optics>
+#include <osgWater/WaterSettings>
+#include <algorithm>
 #include <gtest/gtest.h>
 #include <cmath>
 
@@ -50,6 +52,9 @@ TEST(Optics, FresnelAtNormalAndGrazingIncidence)
     EXPECT_NEAR(fresnelSchlick(0.0f, f, 5.0f), 1.0f, 1e-7f); // and at 90 degrees
     EXPECT_NEAR(fresnelPower(1.0f, 5.0f), 0.0f, 1e-7f);
     EXPECT_NEAR(fresnelPower(0.0f, 5.0f), 1.0f, 1e-7f);
+    EXPECT_NEAR(fresnelReciprocal(0.0f, 6.6f), 1.0f, 1e-7f);                      // grazing
+    EXPECT_NEAR(fresnelReciprocal(1.0f, 6.6f), std::pow(2.0f, -6.6f), 1e-7f);     // normal incidence
+    EXPECT_NEAR(fresnelModel(3, 0.5f, kAir, kWater, 6.6f), fresnelReciprocal(0.5f, 6.6f), 1e-7f);
     // Brewster angle: p-polarised reflectance vanishes, so F = rs^2 / 2 there
     const float tb = std::atan(kWater / kAir);
     const float tt = std::asin(std::sin(tb) / kWater);
@@ -298,4 +303,29 @@ TEST(Optics, FromBelowThesisModelNeverVanishes)
         EXPECT_NEAR(b.R.x, kWater * std::sin(t), 1e-5f) << deg;
         EXPECT_TRUE(finite(b.R));
     }
+}
+
+TEST(Optics, TheReciprocalPowerFitsWaterAsTheDeepWaterPaperFound)
+{
+    // 1 / (1 + E.N)^p against the exact unpolarised curve for n = 1.333, 0-90 degrees: the best p
+    // by the largest error and by the RMS error, the default setting at the first, and both
+    // errors well under Schlick's (eq. 7-8, q = 5) over the same angles
+    const double pMax = bestReciprocalPower(kAir, kWater, true), pRms = bestReciprocalPower(kAir, kWater, false);
+    EXPECT_NEAR(pMax, 6.62, 0.015);
+    EXPECT_NEAR(pRms, 6.65, 0.015);
+    osg::ref_ptr<osgWater::WaterSettings> s = new osgWater::WaterSettings;
+    EXPECT_NEAR(s->getFresnelReciprocalPower(), pMax, 0.005) << "the default is the fitted power";
+    const FitError e = reciprocalFresnelError(pMax, kAir, kWater);
+    EXPECT_LT(e.max, 0.011);
+    EXPECT_LT(e.rms, 0.0075);
+    double schlickMax = 0.0;
+    const float f = normalReflectance(kAir, kWater);
+    for (int i = 0; i <= 900; ++i) {
+        const float c = float(std::cos(0.5 * M_PI * i / 900));
+        schlickMax = std::max(schlickMax, double(std::fabs(fresnelSchlick(c, f, 5.0f) - fresnelExact(c, kAir, kWater))));
+    }
+    EXPECT_GT(schlickMax, 4 * e.max);
+    // a power far from the fit is far worse (the paper's error plot: each power's curve)
+    EXPECT_GT(reciprocalFresnelError(5.0, kAir, kWater).max, 5 * e.max);
+    EXPECT_GT(reciprocalFresnelError(8.0, kAir, kWater).max, 5 * e.max);
 }

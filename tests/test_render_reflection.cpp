@@ -5,6 +5,7 @@
 #include <osgWater/Optics>
 #include <osgWater/WaterTypes>
 #include <algorithm>
+#include <functional>
 #include <cmath>
 
 using namespace testing_gl;
@@ -97,20 +98,19 @@ TEST(RenderReflection, RedQuadAppearsMirroredWhereGeometryPredicts)
     EXPECT_NEAR(sky[2], 0.8f, 0.02f);
 }
 
-// The water models: the thesis's one k and colour, and each per-channel preset.
-class RenderWaterModel : public ::testing::TestWithParam<std::string> {};
+namespace {
 
-TEST_P(RenderWaterModel, ShadedColourMatchesTheOpticsMirror)
+// flat water over a uniform grey bed: every water pixel is eq. 9 of eq. 5 of the bed and the
+// reflected sky, with the settings' Fresnel model and attenuation eq. 4 along the exact refracted
+// path, per channel with the water model's extinction and body colour
+void expectShadingAsTheOpticsMirror(const std::function<void(WaterSettings&)>& configure)
 {
-    // flat water over a uniform grey bed: every water pixel is eq. 9 of eq. 5 of the bed and the
-    // reflected sky, with Fresnel eq. 7-8 and attenuation eq. 4 along the exact refracted path,
-    // per channel with the model's extinction and body colour
     Harness h(160, 120);
     REQUIRE_GL(h);
     const float depth = 1.5f;
     osg::ref_ptr<WaterNode> water = flatWaterOverBed(depth);
     water->getSettings()->setFovExtension(1.5f, 1.5f, 10.0f);
-    if (const WaterType* type = findWaterType(GetParam())) applyWaterType(*water->getSettings(), *type);
+    configure(*water->getSettings());
     h.setScene(water.get());
     const osg::Vec3d eye(0, -3, 2.5);
     h.lookAt(eye, osg::Vec3d(0, 8, -1.5));
@@ -125,4 +125,31 @@ TEST_P(RenderWaterModel, ShadedColourMatchesTheOpticsMirror)
     EXPECT_LT(m.worst, 0.01) << "8-bit pass textures: tolerance 0.01";
 }
 
+}
+
+// The water models: the thesis's one k and colour, and each per-channel preset.
+class RenderWaterModel : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(RenderWaterModel, ShadedColourMatchesTheOpticsMirror)
+{
+    expectShadingAsTheOpticsMirror([](WaterSettings& s) {
+        if (const WaterType* type = findWaterType(GetParam())) applyWaterType(s, *type);
+    });
+}
+
 INSTANTIATE_TEST_SUITE_P(Models, RenderWaterModel, waterModels(), waterModelTestName);
+
+// The Fresnel models, each held to its CPU mirror (optics::fresnelModel) by the shaded colour
+class RenderFresnelModel : public ::testing::TestWithParam<WaterSettings::FresnelModel> {};
+
+TEST_P(RenderFresnelModel, ShadedColourMatchesTheOpticsMirror)
+{
+    expectShadingAsTheOpticsMirror([](WaterSettings& s) { s.setFresnelModel(GetParam()); });
+}
+
+INSTANTIATE_TEST_SUITE_P(Fresnel, RenderFresnelModel,
+                         ::testing::Values(WaterSettings::FRESNEL_SCHLICK, WaterSettings::FRESNEL_POWER,
+                                           WaterSettings::FRESNEL_EXACT, WaterSettings::FRESNEL_RECIPROCAL),
+                         [](const ::testing::TestParamInfo<WaterSettings::FresnelModel>& info) {
+                             return std::string(WaterSettings::fresnelModelName(info.param));
+                         });

@@ -96,7 +96,7 @@ std::vector<Group> groups()
 {
     std::vector<Group> g;
     const WaterSettings::FresnelModel fresnel[] = { WaterSettings::FRESNEL_SCHLICK, WaterSettings::FRESNEL_POWER,
-                                                    WaterSettings::FRESNEL_EXACT };
+                                                    WaterSettings::FRESNEL_EXACT, WaterSettings::FRESNEL_RECIPROCAL };
     const WaterSettings::UnderwaterModel under[] = { WaterSettings::UNDERWATER_PHYSICAL, WaterSettings::UNDERWATER_THESIS };
     const int gathers[] = { -1, WaterSettings::GATHER_CPU, WaterSettings::GATHER_POINTS_COPY,
                             WaterSettings::GATHER_POINTS_TEXTURE, WaterSettings::GATHER_AUTO };

@@ -42,6 +42,7 @@ osg::ref_ptr<WaterNode> pond()
     s->setWaterColor(osg::Vec3(0.1f, 0.3f, 0.2f));
     s->setAttenuation(0.25f);
     s->setFresnelModel(WaterSettings::FRESNEL_EXACT);
+    s->setFresnelReciprocalPower(7.5f);
     s->setRefractionLookup(WaterSettings::ONE_STEP);
     s->setSearchSteps(5);
     s->setFovExtensionNear(1.4f);
@@ -92,6 +93,8 @@ TEST(Serialization, ExpectedTextReadsBackIntoTheSameNode)
     EXPECT_EQ(s->getWaterColor(), osg::Vec3(0.1f, 0.3f, 0.2f));
     EXPECT_FLOAT_EQ(s->getAttenuation(), 0.25f);
     EXPECT_EQ(s->getFresnelModel(), WaterSettings::FRESNEL_EXACT);
+    EXPECT_FLOAT_EQ(s->getFresnelReciprocalPower(), 7.5f);
+    EXPECT_FLOAT_EQ(s->getFresnelExponent(), 5.0f); // absent: default
     EXPECT_EQ(s->getRefractionLookup(), WaterSettings::ONE_STEP);
     EXPECT_EQ(s->getSearchSteps(), 5);
     EXPECT_FLOAT_EQ(s->getFovExtensionNear(), 1.4f);

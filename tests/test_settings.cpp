@@ -16,6 +16,7 @@ TEST(Settings, DefaultsAreThesisTable1)
     EXPECT_FLOAT_EQ(s->getAttenuation(), 0.5f);       // k
     EXPECT_EQ(s->getWaterColor(), osg::Vec3(0.0f, 0.2f, 0.1f));
     EXPECT_FLOAT_EQ(s->getFresnelExponent(), 5.0f);   // q
+    EXPECT_FLOAT_EQ(s->getFresnelReciprocalPower(), 6.62f); // the fit for water (docs/FRESNEL.md)
     EXPECT_FLOAT_EQ(s->getFovExtensionNear(), 1.5f);  // FOV_ext
     EXPECT_EQ(s->getReflectionTextureSize(), 512);
     EXPECT_EQ(s->getRefractionTextureSize(), 512);

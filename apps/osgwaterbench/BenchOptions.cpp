@@ -13,6 +13,7 @@ const char* kUsage =
     "usage: osgwaterbench --scene FILE --views FILE [--size WxH] [--out DIR] [--techniques LIST]\n"
     "                     [--docs DIR] [--frames N] [--photons N] [--quick]\n"
     "                     [--ablation-rounds N] [--ablation-only]\n"
+    "       osgwaterbench --fresnel-figure DIR\n"
     "  --scene FILE       .osgt/.osgb with an osgWater::WaterNode, or any model (water added at z = 0)\n"
     "  --views FILE       one view per line: ex ey ez cx cy cz ux uy uz [t] [# name]\n"
     "  --size WxH         viewport (default 1280x720)\n"
@@ -23,6 +24,8 @@ const char* kUsage =
     "  --photons N        photons of the caustics reference (default 4000000)\n"
     "  --ablation-rounds N  alternating rounds of the ablation table (default 3, 0: none)\n"
     "  --ablation-only    the ablation table alone (timing; no techniques, no reference)\n"
+    "  --fresnel-figure DIR  only write DIR/FRESNEL.md and DIR/fresnel-approximations.png (the\n"
+    "                     reciprocal-power Fresnel fit) and exit\n"
     "  --quick            smoke run: 96x64, first view, default and one-step, 3 frames, 20000 photons\n";
 
 bool number(const char* s, double& out)
@@ -59,6 +62,7 @@ bool BenchOptions::read(int argc, char** argv, std::string& error)
         else if (a == "--views") { if (!value(viewsFile)) return false; }
         else if (a == "--out") { if (!value(out)) return false; }
         else if (a == "--docs") { if (!value(docs)) return false; }
+        else if (a == "--fresnel-figure") { if (!value(fresnelFigure)) return false; }
         else if (a == "--techniques") { if (!value(techniques)) return false; }
         else if (a == "--size") {
             if (!value(v)) return false;
@@ -82,6 +86,7 @@ bool BenchOptions::read(int argc, char** argv, std::string& error)
             return false;
         }
     }
+    if (!fresnelFigure.empty()) return true; // nothing else is read
     if (scene.empty() || viewsFile.empty()) {
         error = std::string("--scene and --views are required\n") + kUsage;
         return false;

@@ -7,6 +7,7 @@ namespace bench {
 
 struct BenchOptions {
     std::string scene, viewsFile, out = "bench-out", techniques, docs, commandLine;
+    std::string fresnelFigure;     //!< --fresnel-figure DIR: the Fresnel fit's figure and table alone
     int width = 1280, height = 720;
     int frames = 30;               //!< timed frames per technique and view (>= 30 unless --quick)
     size_t photons = 4000000;      //!< caustics reference photons (>= 1e6 for published tables)

@@ -27,6 +27,7 @@ std::vector<Technique> allTechniques()
     t.push_back({ "fresnel-schlick", [](WaterSettings& s) { s.setFresnelModel(WaterSettings::FRESNEL_SCHLICK); } });
     t.push_back({ "fresnel-power", [](WaterSettings& s) { s.setFresnelModel(WaterSettings::FRESNEL_POWER); } });
     t.push_back({ "fresnel-exact", [](WaterSettings& s) { s.setFresnelModel(WaterSettings::FRESNEL_EXACT); } });
+    t.push_back({ "fresnel-reciprocal", [](WaterSettings& s) { s.setFresnelModel(WaterSettings::FRESNEL_RECIPROCAL); } });
     t.push_back({ "caustics-off", [](WaterSettings& s) { s.setCausticsEnabled(false); } });
     t.push_back({ "caustics-unfocused", [](WaterSettings& s) { s.setCausticsFocused(false); } });
     const std::pair<const char*, WaterSettings::CausticsGather> gathers[] = {
@@ -75,14 +76,7 @@ std::string lookupName(const WaterSettings& s)
     return s.getRefractionLookup() == WaterSettings::ONE_STEP ? "one-step" : "iterative";
 }
 
-std::string fresnelName(const WaterSettings& s)
-{
-    switch (s.getFresnelModel()) {
-    case WaterSettings::FRESNEL_POWER: return "power";
-    case WaterSettings::FRESNEL_EXACT: return "exact";
-    default: return "schlick";
-    }
-}
+std::string fresnelName(const WaterSettings& s) { return WaterSettings::fresnelModelName(s.getFresnelModel()); }
 
 std::string causticsName(const WaterSettings& s)
 {

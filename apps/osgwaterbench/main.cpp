@@ -3,6 +3,7 @@
 // estimates against an exact Embree reference (refraction, reflection, Fresnel) and of its
 // caustics against photon tracing. Writes results.json / results.csv and, with --docs, the
 // generated BENCHMARKS.md and its plot.
+#include "FresnelFigure.h"
 #include "Ablation.h"
 #include "BenchOptions.h"
 #include "Probe.h"
@@ -140,6 +141,15 @@ int main(int argc, char** argv)
         return 2;
     }
     if (o.help) return 0;
+    if (!o.fresnelFigure.empty()) {
+        std::string written;
+        if (!writeFresnelFigure(o.fresnelFigure, written)) {
+            std::cerr << "error: " << written << std::endl;
+            return 1;
+        }
+        std::cout << "wrote " << written << std::endl;
+        return 0;
+    }
     std::vector<View> views;
     if (!readViews(o.viewsFile, views, error)) {
         std::cerr << "error: " << error << std::endl;

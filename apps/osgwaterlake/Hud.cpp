@@ -13,7 +13,7 @@ std::string describeSettings(const WaterSettings& s)
     o << "refraction " << (!s.getRefractionEnabled() ? "off" : s.getRefractionLookup() == WaterSettings::ONE_STEP ? "one-step"
                                                                  : "iterative/" + std::to_string(s.getSearchSteps()))
       << (s.getRefractionCameraRotation() ? " rotated" : "") << ", reflection " << (s.getReflectionEnabled() ? "on" : "off")
-      << ", fresnel " << (s.getFresnelModel() == WaterSettings::FRESNEL_EXACT ? "exact" : s.getFresnelModel() == WaterSettings::FRESNEL_POWER ? "power" : "schlick")
+      << ", fresnel " << WaterSettings::fresnelModelName(s.getFresnelModel())
       << ", water ";
     if (s.getWaterModel() == WaterSettings::WATER_PER_CHANNEL) o << "per-channel";
     else o << "k " << s.getAttenuation();

@@ -24,7 +24,8 @@ void LakeOptions::describe(osg::ApplicationUsage& u)
     u.addCommandLineOption("--pond", "Show a garden pond on the north rim, a second water above the lake (key p)");
     u.addCommandLineOption("--lookup <one-step|iterative>", "Refraction lookup technique");
     u.addCommandLineOption("--steps <n>", "Candidates of the iterative search (1-8)");
-    u.addCommandLineOption("--fresnel <schlick|power|exact>", "Fresnel model");
+    u.addCommandLineOption("--fresnel <schlick|power|exact|reciprocal>", "Fresnel model");
+    u.addCommandLineOption("--reciprocal-power <p>", "Power of the reciprocal Fresnel model 1/(1+E.N)^p (default 6.62)");
     u.addCommandLineOption("--q <q>", "Fresnel exponent");
     u.addCommandLineOption("--water-type <name>", "The water: " + osgWater::waterTypeNames() + " (per-channel absorption and scattering; default clear-lake), or thesis (one k, one colour; the default with --k or --water-color)");
     u.addCommandLineOption("--k <k>", "Attenuation per metre (thesis model)");
@@ -80,12 +81,15 @@ bool LakeOptions::read(osg::ArgumentParser& args)
     }
     if (args.read("--steps", n)) _setters.push_back([n](WaterSettings& w) { w.setSearchSteps(n); });
     if (args.read("--fresnel", s)) {
-        if (s != "schlick" && s != "power" && s != "exact") { std::cerr << "error: --fresnel schlick|power|exact" << std::endl; return false; }
-        _setters.push_back([s](WaterSettings& w) {
-            w.setFresnelModel(s == "exact" ? WaterSettings::FRESNEL_EXACT : s == "power" ? WaterSettings::FRESNEL_POWER : WaterSettings::FRESNEL_SCHLICK);
-        });
+        WaterSettings::FresnelModel model;
+        if (!WaterSettings::fresnelModelFromName(s, model)) {
+            std::cerr << "error: --fresnel schlick|power|exact|reciprocal" << std::endl;
+            return false;
+        }
+        _setters.push_back([model](WaterSettings& w) { w.setFresnelModel(model); });
     }
     if (args.read("--q", f)) _setters.push_back([f](WaterSettings& w) { w.setFresnelExponent(f); });
+    if (args.read("--reciprocal-power", f)) _setters.push_back([f](WaterSettings& w) { w.setFresnelReciprocalPower(f); });
     const bool typeGiven = args.read("--water-type", s);
     if (typeGiven) waterType = s;
     // the thesis model's own knobs ask for the thesis model, unless a type is named too

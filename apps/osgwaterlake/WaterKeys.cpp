@@ -12,7 +12,7 @@ bool WaterKeys::handle(const osgGA::GUIEventAdapter& ea, osgGA::GUIActionAdapter
     case 't': s.setRefractionLookup(s.getRefractionLookup() == WaterSettings::ITERATIVE ? WaterSettings::ONE_STEP : WaterSettings::ITERATIVE); return true;
     case '+': case '=': s.setSearchSteps(std::min(s.getSearchSteps() + 1, 8)); return true;
     case '-': s.setSearchSteps(std::max(s.getSearchSteps() - 1, 1)); return true;
-    case 'm': s.setFresnelModel(WaterSettings::FresnelModel((int(s.getFresnelModel()) + 1) % 3)); return true;
+    case 'm': s.setFresnelModel(WaterSettings::FresnelModel((int(s.getFresnelModel()) + 1) % (WaterSettings::FRESNEL_RECIPROCAL + 1))); return true;
     case 'o': s.setRefractionCameraRotation(!s.getRefractionCameraRotation()); return true;
     case 'k': s.setCausticsEnabled(!s.getCausticsEnabled()); return true;
     case 'l': s.setGlowEnabled(!s.getGlowEnabled()); return true;
