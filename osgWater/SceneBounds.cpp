@@ -82,12 +82,13 @@ private:
 
 }
 
-osg::BoundingBox osgWater::litWaterBox(osg::Group& scene, const osg::BoundingBox& water, double crest,
-                                       const osg::Vec3& towardsSun, int cells)
+LitWater osgWater::findLitWater(osg::Group& scene, const osg::BoundingBox& water, double crest,
+                                const osg::Vec3& towardsSun, int cells)
 {
-    osg::BoundingBox lit;
+    LitWater result;
+    osg::BoundingBox& lit = result.box;
     osg::Vec3d sun(towardsSun);
-    if (!water.valid() || cells < 1 || !(sun.normalize() > 0.0) || !(sun.z() > 1e-3)) return lit; // sun at the horizon: none
+    if (!water.valid() || cells < 1 || !(sun.normalize() > 0.0) || !(sun.z() > 1e-3)) return result; // sun at the horizon: none
     SunRays rays;
     rays.towardsSun = sun;
     rays.crest = crest;
@@ -95,30 +96,40 @@ osg::BoundingBox osgWater::litWaterBox(osg::Group& scene, const osg::BoundingBox
     rays.x0 = water.xMin();
     rays.y0 = water.yMin();
     rays.cell = std::max(water.xMax() - water.xMin(), water.yMax() - water.yMin()) / cells;
-    if (!(rays.cell > 0.0)) return lit;
+    if (!(rays.cell > 0.0)) return result;
     rays.nearest.assign(size_t(cells) * cells, std::numeric_limits<double>::infinity());
     SunRayVisitor visitor(rays);
     for (unsigned int i = 0; i < scene.getNumChildren(); ++i) scene.getChild(i)->accept(visitor);
 
-    double deepest = 0.0; // along the rays
+    double deepest = 0.0, bedSum = 0.0, shadeSum = 0.0; // along the rays
+    size_t bedCount = 0, shadeCount = 0;
     for (int j = 0; j < cells; ++j)
         for (int i = 0; i < cells; ++i) {
             const double t = rays.nearest[size_t(j) * cells + i];
-            if (!(t >= 0.0) || std::isinf(t)) continue; // shaded above the crests, or nothing to land on
             const double x = rays.x0 + (i + 0.5) * rays.cell, y = rays.y0 + (j + 0.5) * rays.cell;
-            if (x > water.xMax() || y > water.yMax()) continue; // the square grid's overhang
+            if (x > water.xMax() || y > water.yMax() || std::isinf(t) || std::isnan(t)) continue; // overhang, nothing
+            if (t < 0.0) { // shaded above the crests
+                shadeSum += crest - t * sun.z();
+                ++shadeCount;
+                continue;
+            }
             lit.expandBy(osg::Vec3(x - rays.cell, y - rays.cell, crest));
             lit.expandBy(osg::Vec3(x + rays.cell, y + rays.cell, crest));
             deepest = std::max(deepest, t);
+            bedSum += crest - t * sun.z();
+            ++bedCount;
         }
-    if (!lit.valid()) return lit;
+    result.shaded = shadeCount > 0;
+    if (result.shaded) result.meanShadeZ = shadeSum / shadeCount;
+    if (!lit.valid()) return result;
+    result.meanBedZ = bedSum / bedCount;
     const double depth = deepest * sun.z();
     lit.zMin() = float(crest - 1.25 * depth);
-    return lit;
+    return result;
 }
 
 void SceneBoxes::update(osg::Group& group, const osg::BoundingSphere& bound, const osg::BoundingBox& water,
-                        double crest, const osg::Vec3& towardsSun)
+                        double crest, const osg::Vec3& towardsSun, bool lit)
 {
     const bool moved = bound.center() != _key.center() || bound.radius() != _key.radius();
     if (moved) {
@@ -127,12 +138,17 @@ void SceneBoxes::update(osg::Group& group, const osg::BoundingSphere& bound, con
         for (unsigned int i = 0; i < group.getNumChildren(); ++i) group.getChild(i)->accept(cbv);
         _whole = cbv.getBoundingBox();
     }
+    if (!lit) {
+        _litValid = false;
+        _lit = LitWater();
+        return;
+    }
     if (moved || !_litValid || crest != _crest || towardsSun != _sun || water._min != _waterKey._min ||
         water._max != _waterKey._max) {
         _litValid = true;
         _crest = crest;
         _sun = towardsSun;
         _waterKey = water;
-        _lit = litWaterBox(group, water, crest, towardsSun);
+        _lit = findLitWater(group, water, crest, towardsSun);
     }
 }

@@ -184,6 +184,7 @@ void WaterNode::traverse(osg::NodeVisitor& nv)
         // bounds are computed lazily; views may cull in parallel threads: compute them here, once
         getBound();
         _surface->getBoundingBox();
+        updateSceneFacts();
         return;
     }
     if (osgUtil::CullVisitor* cv = nv.asCullVisitor()) {
@@ -443,6 +444,34 @@ int WaterNode::fitTexture(const char* what, int size, const CausticsSupport& sup
     return support.maxTextureSize;
 }
 
+void WaterNode::updateSceneFacts()
+{
+    const WaterSettings& s = *_settings;
+    const bool planes = s.getReflectionLookup() == WaterSettings::REFLECTION_PLANE ||
+                        s.getRefractionLookup() == WaterSettings::PLANE_OFFSET;
+    const bool focus = s.getCausticsEnabled() && s.getCausticsFocused();
+    const double level = _surface->getLevel();
+    LitWater lit;
+    {
+        OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_causticsMutex);
+        // the rays along the sun are walked only for what uses them, and again only on a change
+        _sceneBoxes.update(*this, osg::Group::computeBound(), _surface->getBoundingBox(), crestHeight(),
+                           s.getSunDirection(), planes || focus);
+        lit = _sceneBoxes.litWater();
+    }
+    // the planes: as set, or the scene's (see WaterSettings::setReflectionPlaneHeight)
+    float height = s.getReflectionPlaneHeight(), depth = s.getRefractionPlaneDepth();
+    if (height <= 0.0f) height = lit.shaded && lit.meanShadeZ > level ? float(lit.meanShadeZ - level) : s.getReflectionScale();
+    if (depth <= 0.0f) depth = lit.box.valid() && lit.meanBedZ < level ? float(level - lit.meanBedZ) : 1.0f;
+    _lookupPlanes = osg::Vec2f(std::max(height, 1e-3f), std::max(depth, 1e-3f));
+    _states.applyLookupPlanes(_lookupPlanes);
+}
+
+double WaterNode::crestHeight() const
+{
+    return _surface->getLevel() + _surface->getMaxAmplitude() + _settings->getClipOffset();
+}
+
 void WaterNode::prepareCaustics(ViewFrame& v)
 {
     const WaterSettings& s = *_settings;
@@ -455,9 +484,8 @@ void WaterNode::prepareCaustics(ViewFrame& v)
         f.water = _surface->getBoundingBox();
         f.level = _surface->getLevel();
         f.clearance = _surface->getMaxAmplitude() + s.getClipOffset();
-        _sceneBoxes.update(*this, osg::Group::computeBound(), f.water, f.level + f.clearance, f.towardsSun);
-        f.scene = _sceneBoxes.whole();
-        f.litWater = _sceneBoxes.litWater();
+        f.scene = _sceneBoxes.whole(); // brought up to date by the update traversal (updateSceneFacts)
+        f.litWater = _sceneBoxes.litWater().box;
         f.surface = _surface.get();
         f.settings = &s;
         _causticsNeeded = CausticsCamera::needed(f);

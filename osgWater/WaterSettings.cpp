@@ -42,7 +42,8 @@ WaterSettings::WaterSettings()
       _absorption(defaultAbsorption()), _scattering(defaultScattering()), _backscattering(defaultBackscattering()),
       _fresnelModel(FRESNEL_SCHLICK), _fresnelExponent(5.0f), _fresnelReciprocalPower(6.62f),
       _reflectionScale(1.0f),
-      _refractionLookup(ITERATIVE), _searchSteps(3), _searchTolerance(0.01f),
+      _refractionLookup(ITERATIVE), _reflectionLookup(REFLECTION_OFFSET), _reflectionPlaneHeight(0.0f),
+      _refractionPlaneDepth(0.0f), _searchSteps(3), _searchTolerance(0.01f),
       _oneStepScale(1.0f), _oneStepMaxDepth(20.0f), _underwaterLookupScale(1.5f),
       _fovExtNear(1.5f), _fovExtFar(1.2f), _fovExtFalloff(10.0f),
       _clipOffset(0.05f),
@@ -76,7 +77,8 @@ WaterSettings::WaterSettings(const WaterSettings& o, const osg::CopyOp& copyop)
       _backscattering(o._backscattering),
       _fresnelModel(o._fresnelModel), _fresnelExponent(o._fresnelExponent),
       _fresnelReciprocalPower(o._fresnelReciprocalPower), _reflectionScale(o._reflectionScale),
-      _refractionLookup(o._refractionLookup), _searchSteps(o._searchSteps), _searchTolerance(o._searchTolerance),
+      _refractionLookup(o._refractionLookup), _reflectionLookup(o._reflectionLookup),
+      _reflectionPlaneHeight(o._reflectionPlaneHeight), _refractionPlaneDepth(o._refractionPlaneDepth), _searchSteps(o._searchSteps), _searchTolerance(o._searchTolerance),
       _oneStepScale(o._oneStepScale), _oneStepMaxDepth(o._oneStepMaxDepth),
       _underwaterLookupScale(o._underwaterLookupScale),
       _fovExtNear(o._fovExtNear), _fovExtFar(o._fovExtFar), _fovExtFalloff(o._fovExtFalloff),
@@ -113,7 +115,10 @@ void WaterSettings::setAbsorption(const osg::Vec3& a) { _absorption = clampColor
 void WaterSettings::setScattering(const osg::Vec3& b) { _scattering = clampColor("scattering", b, defaultScattering(), 100.0f); touch(); }
 void WaterSettings::setBackscattering(const osg::Vec3& bb) { _backscattering = clampColor("backscattering", bb, defaultBackscattering(), 100.0f); touch(); }
 void WaterSettings::setFresnelModel(FresnelModel m) { _fresnelModel = validEnum("fresnelModel", m, FRESNEL_RECIPROCAL, FRESNEL_SCHLICK); touch(); }
-void WaterSettings::setRefractionLookup(RefractionLookup l) { _refractionLookup = validEnum("refractionLookup", l, ITERATIVE, ITERATIVE); touch(); }
+void WaterSettings::setRefractionLookup(RefractionLookup l) { _refractionLookup = validEnum("refractionLookup", l, PLANE_OFFSET, ITERATIVE); touch(); }
+void WaterSettings::setReflectionLookup(ReflectionLookup l) { _reflectionLookup = validEnum("reflectionLookup", l, REFLECTION_PLANE, REFLECTION_OFFSET); touch(); }
+void WaterSettings::setReflectionPlaneHeight(float m) { _reflectionPlaneHeight = clampOr("reflectionPlaneHeight", m, 0.0f, 10000.0f, 0.0f); touch(); }
+void WaterSettings::setRefractionPlaneDepth(float m) { _refractionPlaneDepth = clampOr("refractionPlaneDepth", m, 0.0f, 10000.0f, 0.0f); touch(); }
 void WaterSettings::setUnderwaterModel(UnderwaterModel m) { _underwaterModel = validEnum("underwaterModel", m, UNDERWATER_THESIS, UNDERWATER_PHYSICAL); touch(); }
 void WaterSettings::setCausticsGather(CausticsGather g) { _causticsGather = validEnum("causticsGather", g, GATHER_CPU, GATHER_AUTO); touch(); }
 void WaterSettings::setAirIOR(float v) { _airIOR = clampOr("airIOR", v, 1.0f, 3.0f, 1.0f); touch(); }
@@ -124,22 +129,40 @@ void WaterSettings::setFresnelExponent(float q) { _fresnelExponent = clampOr("fr
 void WaterSettings::setFresnelReciprocalPower(float p) { _fresnelReciprocalPower = clampOr("fresnelReciprocalPower", p, 1.0f, 32.0f, 6.62f); touch(); }
 
 namespace {
-const char* const kFresnelNames[] = { "schlick", "power", "exact", "reciprocal" }; // in FresnelModel's order
+// each enum's names in its values' order: one table per enum, read both ways
+const char* const kFresnelNames[] = { "schlick", "power", "exact", "reciprocal" };
+const char* const kRefractionLookupNames[] = { "one-step", "iterative", "plane" };
+const char* const kReflectionLookupNames[] = { "offset", "plane" };
+
+template <typename E, size_t N>
+const char* nameOf(const char* const (&names)[N], E value)
+{
+    return int(value) >= 0 && int(value) < int(N) ? names[int(value)] : names[0];
 }
 
-const char* WaterSettings::fresnelModelName(FresnelModel m)
+template <typename E, size_t N>
+bool valueOf(const char* const (&names)[N], const std::string& name, E& value)
 {
-    return m >= FRESNEL_SCHLICK && m <= FRESNEL_RECIPROCAL ? kFresnelNames[m] : "schlick";
-}
-
-bool WaterSettings::fresnelModelFromName(const std::string& name, FresnelModel& m)
-{
-    for (int i = FRESNEL_SCHLICK; i <= FRESNEL_RECIPROCAL; ++i)
-        if (name == kFresnelNames[i]) {
-            m = FresnelModel(i);
+    for (size_t i = 0; i < N; ++i)
+        if (name == names[i]) {
+            value = E(i);
             return true;
         }
     return false;
+}
+}
+
+const char* WaterSettings::fresnelModelName(FresnelModel m) { return nameOf(kFresnelNames, m); }
+bool WaterSettings::fresnelModelFromName(const std::string& name, FresnelModel& m) { return valueOf(kFresnelNames, name, m); }
+const char* WaterSettings::refractionLookupName(RefractionLookup l) { return nameOf(kRefractionLookupNames, l); }
+bool WaterSettings::refractionLookupFromName(const std::string& name, RefractionLookup& l)
+{
+    return valueOf(kRefractionLookupNames, name, l);
+}
+const char* WaterSettings::reflectionLookupName(ReflectionLookup l) { return nameOf(kReflectionLookupNames, l); }
+bool WaterSettings::reflectionLookupFromName(const std::string& name, ReflectionLookup& l)
+{
+    return valueOf(kReflectionLookupNames, name, l);
 }
 void WaterSettings::setReflectionScale(float c) { _reflectionScale = clampOr("reflectionScale", c, 0.0f, 1000.0f, 1.0f); touch(); }
 void WaterSettings::setSearchSteps(int n) { _searchSteps = clampInt("searchSteps", n, 1, 8); touch(); }

@@ -68,6 +68,7 @@ WaterStateSets::WaterStateSets()
     _water->addUniform(new osg::Uniform("osgWater_SearchSteps", 3));
     _water->addUniform(new osg::Uniform("osgWater_IOR", osg::Vec2f(1.0f, 1.333f)));
     _water->addUniform(new osg::Uniform("osgWater_OneStep", osg::Vec2f(1.0f, 20.0f)));
+    _water->addUniform(new osg::Uniform("osgWater_LookupPlanes", osg::Vec2f(1.0f, 1.0f)));
     _water->addUniform(new osg::Uniform("osgWater_WaterColor", osg::Vec3f()));
     _water->addUniform(new osg::Uniform("osgWater_Extinction", osg::Vec3f()));
 
@@ -114,6 +115,8 @@ void WaterStateSets::applySettings(const WaterSettings& s, const WaterSurface& s
 
     setDefineIf(w, "OSGWATER_GRID", surface.usesGrid());
     setDefineIf(w, "OSGWATER_ONE_STEP", s.getRefractionLookup() == WaterSettings::ONE_STEP);
+    setDefineIf(w, "OSGWATER_REFRACTION_PLANE", s.getRefractionLookup() == WaterSettings::PLANE_OFFSET);
+    setDefineIf(w, "OSGWATER_REFLECTION_PLANE", s.getReflectionLookup() == WaterSettings::REFLECTION_PLANE);
     w->setDefine("OSGWATER_FRESNEL", std::to_string(int(s.getFresnelModel()))); // the enum's numbers
     w->setDefine("OSGWATER_UNDERWATER", s.getUnderwaterModel() == WaterSettings::UNDERWATER_THESIS ? "1" : "0");
     // OSGWATER_NO_REFLECTION / OSGWATER_NO_REFRACTION follow what ran (ViewPasses), not the settings
@@ -143,4 +146,12 @@ void WaterStateSets::releaseGLObjects(osg::State* state) const
     _water->releaseGLObjects(state);
     _guest->releaseGLObjects(state);
     _surfaceBin->releaseGLObjects(state);
+}
+
+void WaterStateSets::applyLookupPlanes(const osg::Vec2f& heightDepth)
+{
+    osg::Uniform* u = _water->getUniform("osgWater_LookupPlanes");
+    osg::Vec2f now;
+    u->get(now);
+    if (now != heightDepth) u->set(heightDepth);
 }

@@ -2,7 +2,8 @@
 // refraction by bottom search in the refraction pass's depth texture, reflection lookup
 // W = U + c R, depth attenuation, Fresnel, final mix (eq. 9). Shared by the surface (water.frag)
 // and the near-plane cap (cap.frag), which shades the surface where the near plane cut it away.
-// The includer lists OSGWATER_EYE_BELOW, OSGWATER_ONE_STEP, OSGWATER_FRESNEL, OSGWATER_UNDERWATER,
+// The includer lists OSGWATER_EYE_BELOW, OSGWATER_ONE_STEP, OSGWATER_REFRACTION_PLANE,
+// OSGWATER_REFLECTION_PLANE, OSGWATER_FRESNEL, OSGWATER_UNDERWATER,
 // OSGWATER_NO_REFLECTION, OSGWATER_NO_REFRACTION, OSGWATER_DEBUG in its import_defines.
 // Debug output (OSGWATER_DEBUG, see osgWater::DebugOutput), alpha says what rgb holds:
 //   2 a point (local frame), 3 a direction (local frame), -1 nothing found, -2 total internal reflection;
@@ -27,6 +28,7 @@ uniform int osgWater_SearchSteps;
 uniform float osgWater_SearchTolerance;    // metres
 uniform vec2 osgWater_OneStep;              // (dv scale, dv max)
 uniform float osgWater_UnderwaterScale;     // m of eq. 13, 15
+uniform vec2 osgWater_LookupPlanes;         // plane-offset lookups: (height above the level, depth below it)
 
 vec3 owSampleProjected(sampler2D tex, mat4 mvp, vec4 P, vec3 fallback)
 {
@@ -35,13 +37,26 @@ vec3 owSampleProjected(sampler2D tex, mat4 mvp, vec4 P, vec3 fallback)
     return texture(tex, c.xy / c.w * 0.5 + 0.5).rgb;
 }
 
-// The refracted colour seen from above: bottom search along R (eq. 4-5).
+// DeepWater's plane-offset lookups: the scene taken as the plane z = planeZ; the ray from U along D
+// meets it at a point (w = 1), or never (w = 0: the direction, a point at infinity).
+vec4 owPlanePoint(vec3 U, vec3 D, float planeZ)
+{
+    float t = (planeZ - U.z) / (abs(D.z) > 1e-6 ? D.z : 1e-6);
+    return t > 0.0 && t < 1e6 ? vec4(U + t * D, 1.0) : vec4(D, 0.0);
+}
+
+// The refracted colour seen from above: bottom search along R (eq. 4-5), or the plane offset.
 vec3 owRefractedFromAbove(vec3 U, vec3 R, out vec4 debugHit)
 {
     debugHit = vec4(0.0, 0.0, 0.0, -1.0);
     vec3 u1 = (osgWater_RefractionView * vec4(U, 1.0)).xyz;
     vec3 R1 = normalize(mat3(osgWater_RefractionView) * R); // unit in that eye space, scaled or not
-#ifdef OSGWATER_ONE_STEP
+#if defined(OSGWATER_REFRACTION_PLANE)
+    // the refracted ray's hit on the plane below the level (a wave's trough under the plane: U)
+    vec4 P = owPlanePoint(U, R, osgWater_Level - osgWater_LookupPlanes.y);
+    vec3 p1 = (osgWater_RefractionView * vec4(P.w > 0.5 ? P.xyz : U, 1.0)).xyz;
+    owBottomHit hit = owBottomHit(true, p1, p1, 0.0);
+#elif defined(OSGWATER_ONE_STEP)
     owBottomHit hit = owOneStepSearch(u1, R1, osgWater_OneStep.x, osgWater_OneStep.y);
 #else
     owBottomHit hit = owIterativeSearch(u1, R1, osgWater_SearchSteps, osgWater_SearchTolerance);
@@ -129,10 +144,18 @@ vec3 owShadeWater(vec3 U, vec3 Nup, vec3 E, out vec4 debugOut)
     vec3 reflCol = osgWater_WaterColor; // no fetch: the reflection pass did not run
     F = tir ? 1.0 : 0.0;
 #else
-    vec3 reflCol = owSampleProjected(osgWater_ReflectionTex, osgWater_ReflectionMVP, vec4(U + c * Rr, 1.0),
-                                     osgWater_WaterColor);
+#if defined(OSGWATER_REFLECTION_PLANE) && !defined(OSGWATER_EYE_BELOW)
+    vec4 reflP = owPlanePoint(U, Rr, osgWater_Level + osgWater_LookupPlanes.x);
+#else
+    vec4 reflP = vec4(U + c * Rr, 1.0);
 #endif
+    vec3 reflCol = owSampleProjected(osgWater_ReflectionTex, osgWater_ReflectionMVP, reflP, osgWater_WaterColor);
+#endif
+#if defined(OSGWATER_REFLECTION_PLANE) && !defined(OSGWATER_EYE_BELOW)
+    vec4 debugRefl = vec4(reflP.xyz, reflP.w > 0.5 ? 2.0 : 3.0);
+#else
     vec4 debugRefl = vec4(U + c * Rr, 2.0);
+#endif
 
     vec3 refrCol = osgWater_WaterColor;
 #ifdef OSGWATER_NO_REFRACTION

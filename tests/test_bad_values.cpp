@@ -51,6 +51,8 @@ std::vector<FloatSetting> floatSettings()
         SETTING("attenuation", setAttenuation, getAttenuation, 0.0f, 100.0f),
         SETTING("fresnelExponent", setFresnelExponent, getFresnelExponent, 0.1f, 64.0f),
         SETTING("fresnelReciprocalPower", setFresnelReciprocalPower, getFresnelReciprocalPower, 1.0f, 32.0f),
+        SETTING("reflectionPlaneHeight", setReflectionPlaneHeight, getReflectionPlaneHeight, 0.0f, 10000.0f),
+        SETTING("refractionPlaneDepth", setRefractionPlaneDepth, getRefractionPlaneDepth, 0.0f, 10000.0f),
         SETTING("reflectionScale", setReflectionScale, getReflectionScale, 0.0f, 1000.0f),
         SETTING("searchTolerance", setSearchTolerance, getSearchTolerance, 0.0f, 10.0f),
         SETTING("oneStepScale", setOneStepScale, getOneStepScale, 0.0f, 100.0f),
@@ -186,7 +188,8 @@ TEST(BadValues, EnumsThatNameNoModelFallBackToTheDefaultWithOneWarning)
     };
     const EnumSetting enums[] = {
         { "fresnelModel", [](WaterSettings& s, int v) { s.setFresnelModel(WaterSettings::FresnelModel(v)); return int(s.getFresnelModel()); }, 3, 0 },
-        { "refractionLookup", [](WaterSettings& s, int v) { s.setRefractionLookup(WaterSettings::RefractionLookup(v)); return int(s.getRefractionLookup()); }, 1, 1 },
+        { "refractionLookup", [](WaterSettings& s, int v) { s.setRefractionLookup(WaterSettings::RefractionLookup(v)); return int(s.getRefractionLookup()); }, 2, 1 },
+        { "reflectionLookup", [](WaterSettings& s, int v) { s.setReflectionLookup(WaterSettings::ReflectionLookup(v)); return int(s.getReflectionLookup()); }, 1, 0 },
         { "underwaterModel", [](WaterSettings& s, int v) { s.setUnderwaterModel(WaterSettings::UnderwaterModel(v)); return int(s.getUnderwaterModel()); }, 1, 0 },
         { "waterModel", [](WaterSettings& s, int v) { s.setWaterModel(WaterSettings::WaterModel(v)); return int(s.getWaterModel()); }, 1, 0 },
         { "causticsGather", [](WaterSettings& s, int v) { s.setCausticsGather(WaterSettings::CausticsGather(v)); return int(s.getCausticsGather()); }, 3, 0 },

@@ -98,6 +98,42 @@ TEST(RenderReflection, RedQuadAppearsMirroredWhereGeometryPredicts)
     EXPECT_NEAR(sky[2], 0.8f, 0.02f);
 }
 
+TEST(RenderReflection, PlaneOffsetLooksUpTheMirrorRaysHitOnThePlane)
+{
+    // DeepWater's reflection lookup on flat water: the point the shader looks up (debug output) is
+    // where the mirror ray meets the plane 3 m above the level, in closed form per pixel
+    Harness h(160, 120);
+    REQUIRE_GL(h);
+    osg::ref_ptr<WaterNode> water = flatWaterOverBed(1.5f);
+    water->getSettings()->setReflectionLookup(WaterSettings::REFLECTION_PLANE);
+    water->getSettings()->setReflectionPlaneHeight(3.0f);
+    water->setDebugOutput(DEBUG_REFLECTION_LOOKUP);
+    h.setScene(water.get());
+    const osg::Vec3d eye(0, -3, 2.5);
+    h.lookAt(eye, osg::Vec3d(0, 8, -1.5));
+    h.frame(0.0);
+    osg::ref_ptr<osg::Image> img = h.readColor();
+    const osg::Matrixd inv = osg::Matrixd::inverse(h.camera()->getViewMatrix() * h.camera()->getProjectionMatrix());
+    int checked = 0;
+    double worst = 0.0;
+    for (int y = 0; y < h.height(); y += 3)
+        for (int x = 0; x < h.width(); x += 3) {
+            const double nx = (x + 0.5) / h.width() * 2 - 1, ny = (y + 0.5) / h.height() * 2 - 1;
+            osg::Vec3d d = osg::Vec3d(nx, ny, 1) * inv - osg::Vec3d(nx, ny, -1) * inv;
+            d.normalize();
+            if (d.z() > -0.05) continue;
+            const osg::Vec3d U = eye + d * (-eye.z() / d.z());
+            const osg::Vec3d R(d.x(), d.y(), -d.z()); // the mirror ray
+            const osg::Vec3d P = U + R * (3.0 / R.z());
+            const float* c = pixel(img.get(), x, y);
+            ASSERT_NEAR(c[3], 2.0f, 1e-3f) << "a point, at pixel " << x << ", " << y;
+            worst = std::max(worst, (osg::Vec3d(c[0], c[1], c[2]) - P).length() / (P - U).length());
+            ++checked;
+        }
+    EXPECT_GT(checked, 500);
+    EXPECT_LT(worst, 1e-3) << "relative to the lookup distance";
+}
+
 namespace {
 
 // flat water over a uniform grey bed: every water pixel is eq. 9 of eq. 5 of the bed and the

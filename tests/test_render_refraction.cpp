@@ -122,6 +122,27 @@ TEST(RenderRefraction, IterativeSearchFindsTheSnellHitAndBeatsOneStep)
                 quantile(iter, 0.99), quantile(one, 0.5), quantile(one, 0.99));
 }
 
+TEST(RenderRefraction, PlaneOffsetAtTheBedsDepthFindsTheSnellHit)
+{
+    // DeepWater's refraction lookup: the refracted ray's hit on a plane below the level. With the
+    // plane at the bed (2 m), that hit is the exact one (up to float rounding): a tenth of a texel
+    // at the median; a plane 1 m too shallow moves it by many texels
+    RefractionScene sc;
+    REQUIRE_GL(sc.h);
+    sc.water->getSettings()->setRefractionPlaneDepth(kDepth);
+    int misses = 0;
+    const std::vector<double> exact = sc.texelErrors(WaterSettings::PLANE_OFFSET, 1, &misses);
+    ASSERT_GT(exact.size(), 5000u);
+    EXPECT_EQ(misses, 0);
+    EXPECT_LT(quantile(exact, 0.5), 0.1);
+    EXPECT_LT(quantile(exact, 0.99), 0.5);
+    sc.water->getSettings()->setRefractionPlaneDepth(kDepth - 1.0f);
+    const std::vector<double> shallow = sc.texelErrors(WaterSettings::PLANE_OFFSET, 1, &misses);
+    EXPECT_GT(quantile(shallow, 0.5), 3.0);
+    std::printf("plane offset texel error median / p99: at the bed %.3f / %.3f, 1 m above it %.3f / %.3f\n",
+                quantile(exact, 0.5), quantile(exact, 0.99), quantile(shallow, 0.5), quantile(shallow, 0.99));
+}
+
 TEST(RenderRefraction, RotatedRefractionCameraFindsTheSameHit)
 {
     // thesis §5.1: the refraction camera rotated about O; the shader maps U and R into that camera

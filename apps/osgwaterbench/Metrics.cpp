@@ -92,7 +92,10 @@ ViewErrors measureView(const ReferenceImage& ref, const Estimate& e, const RayCa
                 osg::Vec2d est, exact;
                 const osg::Vec4d target = (r.flags & PixelRef::REFLECTED_HIT) ? osg::Vec4d(r.Y.x, r.Y.y, r.Y.z, 1.0)
                                                                               : osg::Vec4d(r.Y.x, r.Y.y, r.Y.z, 0.0);
-                if (l.w() > 1.5f && texel(e.reflectionMVP, osg::Vec4d(l.x(), l.y(), l.z(), 1.0), e.reflectionSize, est) &&
+                // the lookup: a point (alpha 2) or, from a plane-offset lookup whose ray meets no plane, a
+                // direction (alpha 3: a point at infinity)
+                const double w = l.w() > 2.5f ? 0.0 : 1.0;
+                if (l.w() > 1.5f && texel(e.reflectionMVP, osg::Vec4d(l.x(), l.y(), l.z(), w), e.reflectionSize, est) &&
                     texel(e.reflectionMVP, target, e.reflectionSize, exact))
                     v.reflectionTexels.push_back(float((est - exact).length()));
             }

@@ -16,6 +16,8 @@ std::vector<Technique> allTechniques()
                          s.setRefractionLookup(WaterSettings::ITERATIVE);
                          s.setSearchSteps(steps);
                      } });
+    t.push_back({ "refraction-plane", [](WaterSettings& s) { s.setRefractionLookup(WaterSettings::PLANE_OFFSET); } });
+    t.push_back({ "reflection-plane", [](WaterSettings& s) { s.setReflectionLookup(WaterSettings::REFLECTION_PLANE); } });
     t.push_back({ "no-rotation", [](WaterSettings& s) { s.setRefractionCameraRotation(false); } });
     for (int size : { 256, 1024 })
         t.push_back({ "texture-" + std::to_string(size), [size](WaterSettings& s) {
@@ -73,7 +75,7 @@ bool selectTechniques(const std::string& list, std::vector<Technique>& out, std:
 
 std::string lookupName(const WaterSettings& s)
 {
-    return s.getRefractionLookup() == WaterSettings::ONE_STEP ? "one-step" : "iterative";
+    return WaterSettings::refractionLookupName(s.getRefractionLookup());
 }
 
 std::string fresnelName(const WaterSettings& s) { return WaterSettings::fresnelModelName(s.getFresnelModel()); }

@@ -10,9 +10,10 @@ using osgWater::WaterSettings;
 std::string describeSettings(const WaterSettings& s)
 {
     std::ostringstream o;
-    o << "refraction " << (!s.getRefractionEnabled() ? "off" : s.getRefractionLookup() == WaterSettings::ONE_STEP ? "one-step"
-                                                                 : "iterative/" + std::to_string(s.getSearchSteps()))
-      << (s.getRefractionCameraRotation() ? " rotated" : "") << ", reflection " << (s.getReflectionEnabled() ? "on" : "off")
+    o << "refraction " << (!s.getRefractionEnabled() ? "off" : s.getRefractionLookup() == WaterSettings::ITERATIVE
+                                                                 ? "iterative/" + std::to_string(s.getSearchSteps())
+                                                                 : std::string(WaterSettings::refractionLookupName(s.getRefractionLookup())))
+      << (s.getRefractionCameraRotation() ? " rotated" : "") << ", reflection " << (s.getReflectionEnabled() ? WaterSettings::reflectionLookupName(s.getReflectionLookup()) : "off")
       << ", fresnel " << WaterSettings::fresnelModelName(s.getFresnelModel())
       << ", water ";
     if (s.getWaterModel() == WaterSettings::WATER_PER_CHANNEL) o << "per-channel";
@@ -60,7 +61,7 @@ public:
                       c ? c->getMilliseconds() : -1.0);
         _text->setText(std::string(line) + describeSettings(*_water->getSettings()) + ", caustics " +
                        describeCaustics(*_water) +
-                       "\nkeys: r reflection  f refraction  t technique  +/- steps  m fresnel  o rotation  k caustics  g gather  u under water  n model  l glow  s stats  arrows move");
+                       "\nkeys: r reflection  f refraction  t technique  e reflection lookup  +/- steps  m fresnel  o rotation  k caustics  g gather  u under water  n model  l glow  s stats  arrows move");
         traverse(node, nv);
     }
 

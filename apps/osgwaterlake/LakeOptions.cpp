@@ -22,7 +22,9 @@ void LakeOptions::describe(osg::ApplicationUsage& u)
     u.addCommandLineOption("--no-hud", "Hide the on-screen text");
     u.addCommandLineOption("--floaters", "Show the buoy and the boat riding the waves (key b)");
     u.addCommandLineOption("--pond", "Show a garden pond on the north rim, a second water above the lake (key p)");
-    u.addCommandLineOption("--lookup <one-step|iterative>", "Refraction lookup technique");
+    u.addCommandLineOption("--lookup <one-step|iterative|plane>", "Refraction lookup technique");
+    u.addCommandLineOption("--reflection-lookup <offset|plane>", "Reflection lookup technique");
+    u.addCommandLineOption("--planes <height> <depth>", "Plane-offset lookups' planes, metres from the level (0: from the scene)");
     u.addCommandLineOption("--steps <n>", "Candidates of the iterative search (1-8)");
     u.addCommandLineOption("--fresnel <schlick|power|exact|reciprocal>", "Fresnel model");
     u.addCommandLineOption("--reciprocal-power <p>", "Power of the reciprocal Fresnel model 1/(1+E.N)^p (default 6.62)");
@@ -76,8 +78,20 @@ bool LakeOptions::read(osg::ArgumentParser& args)
     float f, g, h;
     int n;
     if (args.read("--lookup", s)) {
-        if (s != "one-step" && s != "iterative") { std::cerr << "error: --lookup one-step|iterative" << std::endl; return false; }
-        _setters.push_back([s](WaterSettings& w) { w.setRefractionLookup(s == "one-step" ? WaterSettings::ONE_STEP : WaterSettings::ITERATIVE); });
+        WaterSettings::RefractionLookup lookup;
+        if (!WaterSettings::refractionLookupFromName(s, lookup)) {
+            std::cerr << "error: --lookup one-step|iterative|plane" << std::endl;
+            return false;
+        }
+        _setters.push_back([lookup](WaterSettings& w) { w.setRefractionLookup(lookup); });
+    }
+    if (args.read("--reflection-lookup", s)) {
+        WaterSettings::ReflectionLookup lookup;
+        if (!WaterSettings::reflectionLookupFromName(s, lookup)) {
+            std::cerr << "error: --reflection-lookup offset|plane" << std::endl;
+            return false;
+        }
+        _setters.push_back([lookup](WaterSettings& w) { w.setReflectionLookup(lookup); });
     }
     if (args.read("--steps", n)) _setters.push_back([n](WaterSettings& w) { w.setSearchSteps(n); });
     if (args.read("--fresnel", s)) {
@@ -88,6 +102,10 @@ bool LakeOptions::read(osg::ArgumentParser& args)
         }
         _setters.push_back([model](WaterSettings& w) { w.setFresnelModel(model); });
     }
+    if (args.read("--planes", f, g)) _setters.push_back([f, g](WaterSettings& w) {
+        w.setReflectionPlaneHeight(f);
+        w.setRefractionPlaneDepth(g);
+    });
     if (args.read("--q", f)) _setters.push_back([f](WaterSettings& w) { w.setFresnelExponent(f); });
     if (args.read("--reciprocal-power", f)) _setters.push_back([f](WaterSettings& w) { w.setFresnelReciprocalPower(f); });
     const bool typeGiven = args.read("--water-type", s);

@@ -9,7 +9,15 @@ bool WaterKeys::handle(const osgGA::GUIEventAdapter& ea, osgGA::GUIActionAdapter
     switch (ea.getKey()) {
     case 'r': s.setReflectionEnabled(!s.getReflectionEnabled()); return true;
     case 'f': s.setRefractionEnabled(!s.getRefractionEnabled()); return true;
-    case 't': s.setRefractionLookup(s.getRefractionLookup() == WaterSettings::ITERATIVE ? WaterSettings::ONE_STEP : WaterSettings::ITERATIVE); return true;
+    case 't': // iterative -> plane offset -> one-step -> iterative
+        s.setRefractionLookup(s.getRefractionLookup() == WaterSettings::ITERATIVE ? WaterSettings::PLANE_OFFSET
+                              : s.getRefractionLookup() == WaterSettings::PLANE_OFFSET ? WaterSettings::ONE_STEP
+                                                                                      : WaterSettings::ITERATIVE);
+        return true;
+    case 'e':
+        s.setReflectionLookup(s.getReflectionLookup() == WaterSettings::REFLECTION_OFFSET ? WaterSettings::REFLECTION_PLANE
+                                                                                          : WaterSettings::REFLECTION_OFFSET);
+        return true;
     case '+': case '=': s.setSearchSteps(std::min(s.getSearchSteps() + 1, 8)); return true;
     case '-': s.setSearchSteps(std::max(s.getSearchSteps() - 1, 1)); return true;
     case 'm': s.setFresnelModel(WaterSettings::FresnelModel((int(s.getFresnelModel()) + 1) % (WaterSettings::FRESNEL_RECIPROCAL + 1))); return true;
@@ -66,7 +74,8 @@ void WaterKeys::getUsage(osg::ApplicationUsage& u) const
 {
     u.addKeyboardMouseBinding("r", "Toggle reflection");
     u.addKeyboardMouseBinding("f", "Toggle refraction");
-    u.addKeyboardMouseBinding("t", "Switch refraction lookup (iterative / one-step)");
+    u.addKeyboardMouseBinding("t", "Next refraction lookup (iterative, plane offset, one-step)");
+    u.addKeyboardMouseBinding("e", "Switch reflection lookup (offset U + cR / plane offset)");
     u.addKeyboardMouseBinding("+/-", "More / fewer search steps");
     u.addKeyboardMouseBinding("m", "Next Fresnel model");
     u.addKeyboardMouseBinding("o", "Toggle refraction-camera rotation");

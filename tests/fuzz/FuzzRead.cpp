@@ -39,15 +39,19 @@ std::string checkSettings(const osgWater::WaterSettings& s)
                              s.getOneStepMaxDepth(), s.getUnderwaterLookupScale(), s.getGlowIntensity(),
                              s.getGlowRadius(), s.getGlowResolution(), s.getGlowExponent(),
                              s.getFovExtensionNear(), s.getFovExtensionFar(), s.getFovExtensionFalloff(),
-                             s.getClipOffset(), s.getCausticsIntensity(), s.getNormalReflectance() };
+                             s.getClipOffset(), s.getCausticsIntensity(), s.getNormalReflectance(),
+                             s.getFresnelReciprocalPower(), s.getReflectionPlaneHeight(), s.getRefractionPlaneDepth(),
+                             s.getPassTargetScale(), s.getCausticsMotionTolerance() };
     for (float v : values)
         if (!std::isfinite(v)) return "a setting is not finite";
     if (!finite(s.getWaterColor()) || !finite(s.getSunDirection()) || !finite(s.getSunColor()) ||
         !finite(s.getAmbientColor()))
         return "a colour or the sun direction is not finite";
-    if (int(s.getFresnelModel()) < 0 || int(s.getFresnelModel()) > 2 || int(s.getRefractionLookup()) < 0 ||
-        int(s.getRefractionLookup()) > 1 || int(s.getCausticsGather()) < 0 || int(s.getCausticsGather()) > 3 ||
-        int(s.getUnderwaterModel()) < 0 || int(s.getUnderwaterModel()) > 1)
+    using W = osgWater::WaterSettings;
+    auto outside = [](int v, int last) { return v < 0 || v > last; };
+    if (outside(s.getFresnelModel(), W::FRESNEL_RECIPROCAL) || outside(s.getRefractionLookup(), W::PLANE_OFFSET) ||
+        outside(s.getReflectionLookup(), W::REFLECTION_PLANE) || outside(s.getCausticsGather(), W::GATHER_CPU) ||
+        outside(s.getUnderwaterModel(), W::UNDERWATER_THESIS))
         return "an enum setting holds a value it does not define";
     if (s.getSearchSteps() < 1 || s.getReflectionTextureSize() < 1 || s.getRefractionTextureSize() < 1 ||
         s.getCausticsResolution() < 1 || s.getPhotonGridSize() < 1)
