@@ -3,6 +3,32 @@
 #include <osgDB/FileUtils>
 #include <osgDB/FileNameUtils>
 #include <iostream>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace {
+
+using Setters = std::vector<std::function<void(osgWater::WaterSettings&)>>;
+
+// an option naming one of an enum's values by WaterSettings' name table: a setter when given, false
+// with the names it takes when the name is unknown
+template <typename E>
+bool readEnumOption(osg::ArgumentParser& args, const char* option, const char* names,
+                    bool (*fromName)(const std::string&, E&), void (osgWater::WaterSettings::*set)(E), Setters& setters)
+{
+    std::string name;
+    if (!args.read(option, name)) return true;
+    E value;
+    if (!fromName(name, value)) {
+        std::cerr << "error: " << option << " " << names << std::endl;
+        return false;
+    }
+    setters.push_back([set, value](osgWater::WaterSettings& w) { (w.*set)(value); });
+    return true;
+}
+
+}
 
 using osgWater::WaterSettings;
 
@@ -77,31 +103,14 @@ bool LakeOptions::read(osg::ArgumentParser& args)
     std::string s;
     float f, g, h;
     int n;
-    if (args.read("--lookup", s)) {
-        WaterSettings::RefractionLookup lookup;
-        if (!WaterSettings::refractionLookupFromName(s, lookup)) {
-            std::cerr << "error: --lookup one-step|iterative|plane" << std::endl;
-            return false;
-        }
-        _setters.push_back([lookup](WaterSettings& w) { w.setRefractionLookup(lookup); });
-    }
-    if (args.read("--reflection-lookup", s)) {
-        WaterSettings::ReflectionLookup lookup;
-        if (!WaterSettings::reflectionLookupFromName(s, lookup)) {
-            std::cerr << "error: --reflection-lookup offset|plane" << std::endl;
-            return false;
-        }
-        _setters.push_back([lookup](WaterSettings& w) { w.setReflectionLookup(lookup); });
-    }
+    if (!readEnumOption(args, "--lookup", "one-step|iterative|plane", WaterSettings::refractionLookupFromName,
+                        &WaterSettings::setRefractionLookup, _setters) ||
+        !readEnumOption(args, "--reflection-lookup", "offset|plane", WaterSettings::reflectionLookupFromName,
+                        &WaterSettings::setReflectionLookup, _setters) ||
+        !readEnumOption(args, "--fresnel", "schlick|power|exact|reciprocal", WaterSettings::fresnelModelFromName,
+                        &WaterSettings::setFresnelModel, _setters))
+        return false;
     if (args.read("--steps", n)) _setters.push_back([n](WaterSettings& w) { w.setSearchSteps(n); });
-    if (args.read("--fresnel", s)) {
-        WaterSettings::FresnelModel model;
-        if (!WaterSettings::fresnelModelFromName(s, model)) {
-            std::cerr << "error: --fresnel schlick|power|exact|reciprocal" << std::endl;
-            return false;
-        }
-        _setters.push_back([model](WaterSettings& w) { w.setFresnelModel(model); });
-    }
     if (args.read("--planes", f, g)) _setters.push_back([f, g](WaterSettings& w) {
         w.setReflectionPlaneHeight(f);
         w.setRefractionPlaneDepth(g);
