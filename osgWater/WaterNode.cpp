@@ -319,7 +319,7 @@ WaterNode::ViewFrame WaterNode::gatherFacts(osgUtil::CullVisitor& cv)
     ctx.projection = *cv.getProjectionMatrix();
     ctx.scene = osg::Group::computeBound();
     ctx.level = _surface->getLevel();
-    ctx.clearance = _surface->getMaxAmplitude() + s.getClipOffset();
+    ctx.clearance = clearance();
     ctx.clearColor = camera->getClearColor();
     ctx.settings = &s;
     warnIfScaledUnevenly(ctx.view);
@@ -455,7 +455,7 @@ void WaterNode::updateSceneFacts()
     {
         OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_causticsMutex);
         // the rays along the sun are walked only for what uses them, and again only on a change
-        _sceneBoxes.update(*this, osg::Group::computeBound(), _surface->getBoundingBox(), crestHeight(),
+        _sceneBoxes.update(*this, osg::Group::computeBound(), _surface->getBoundingBox(), level + clearance(),
                            s.getSunDirection(), planes || focus);
         lit = _sceneBoxes.litWater();
     }
@@ -467,9 +467,9 @@ void WaterNode::updateSceneFacts()
     _states.applyLookupPlanes(_lookupPlanes);
 }
 
-double WaterNode::crestHeight() const
+double WaterNode::clearance() const
 {
-    return _surface->getLevel() + _surface->getMaxAmplitude() + _settings->getClipOffset();
+    return _surface->getMaxAmplitude() + _settings->getClipOffset();
 }
 
 void WaterNode::prepareCaustics(ViewFrame& v)
@@ -483,7 +483,7 @@ void WaterNode::prepareCaustics(ViewFrame& v)
         f.towardsSun = s.getSunDirection();
         f.water = _surface->getBoundingBox();
         f.level = _surface->getLevel();
-        f.clearance = _surface->getMaxAmplitude() + s.getClipOffset();
+        f.clearance = clearance();
         f.scene = _sceneBoxes.whole(); // brought up to date by the update traversal (updateSceneFacts)
         f.litWater = _sceneBoxes.litWater().box;
         f.surface = _surface.get();

@@ -60,13 +60,13 @@ std::vector<Wave> osgWater::defaultWaves()
 
 WaterSurface::WaterSurface()
     : _level(0.0), _size(100.0f), _center(0.0f, 0.0f), _resolution(49), _waves(defaultWaves()), _revision(0),
-      _stale(true)
+      _stale(true), _waveSlope(slopeBound(_waves))
 {
 }
 
 WaterSurface::WaterSurface(const WaterSurface& o, const osg::CopyOp& copyop)
     : osg::Geode(o, copyop), _level(o._level), _size(o._size), _center(o._center), _resolution(o._resolution),
-      _waves(o._waves), _userMesh(o._userMesh), _revision(0), _stale(true)
+      _waves(o._waves), _userMesh(o._userMesh), _revision(0), _stale(true), _waveSlope(o._waveSlope)
 {
 }
 
@@ -133,6 +133,7 @@ void WaterSurface::setWaves(const std::vector<Wave>& waves)
             w.phase = 0.0f;
         }
     }
+    _waveSlope = slopeBound(_waves); // asked per view and frame (the glow's cone): worked out here, once
     rebuild();
 }
 
@@ -156,17 +157,18 @@ double WaterSurface::getMaxPhaseSpeed() const
     return c;
 }
 
-double WaterSurface::getMaxSlope() const
+double WaterSurface::getMaxSlope() const { return usesGrid() ? _waveSlope : 1.0; }
+
+double WaterSurface::slopeBound(const std::vector<Wave>& waves)
 {
-    if (!usesGrid()) return 1.0;
     double total = 0.0, best = 0.0;
-    for (const Wave& w : _waves) total += std::fabs(double(w.amplitude)) * w.wavenumber();
+    for (const Wave& w : waves) total += std::fabs(double(w.amplitude)) * w.wavenumber();
     const int n = 720;
     for (int i = 0; i < n; ++i) {
         const double psi = osg::PI * i / n; // u and -u give the same sum
         const double ux = std::cos(psi), uy = std::sin(psi);
         double along = 0.0;
-        for (const Wave& w : _waves) {
+        for (const Wave& w : waves) {
             osg::Vec2d d(w.direction.x(), w.direction.y());
             if (!(d.normalize() > 0.0)) continue;
             along += std::fabs(double(w.amplitude)) * w.wavenumber() * std::fabs(d.x() * ux + d.y() * uy);
