@@ -133,6 +133,8 @@ namespace {
 const char* const kFresnelNames[] = { "schlick", "power", "exact", "reciprocal" };
 const char* const kRefractionLookupNames[] = { "one-step", "iterative", "plane" };
 const char* const kReflectionLookupNames[] = { "offset", "plane" };
+const char* const kUnderwaterModelNames[] = { "physical", "thesis" };
+const char* const kCausticsGatherNames[] = { "auto", "copy", "texture", "cpu" };
 
 template <typename E, size_t N>
 const char* nameOf(const char* const (&names)[N], E value)
@@ -163,6 +165,16 @@ const char* WaterSettings::reflectionLookupName(ReflectionLookup l) { return nam
 bool WaterSettings::reflectionLookupFromName(const std::string& name, ReflectionLookup& l)
 {
     return valueOf(kReflectionLookupNames, name, l);
+}
+const char* WaterSettings::underwaterModelName(UnderwaterModel m) { return nameOf(kUnderwaterModelNames, m); }
+bool WaterSettings::underwaterModelFromName(const std::string& name, UnderwaterModel& m)
+{
+    return valueOf(kUnderwaterModelNames, name, m);
+}
+const char* WaterSettings::causticsGatherName(CausticsGather g) { return nameOf(kCausticsGatherNames, g); }
+bool WaterSettings::causticsGatherFromName(const std::string& name, CausticsGather& g)
+{
+    return valueOf(kCausticsGatherNames, name, g);
 }
 void WaterSettings::setReflectionScale(float c) { _reflectionScale = clampOr("reflectionScale", c, 0.0f, 1000.0f, 1.0f); touch(); }
 void WaterSettings::setSearchSteps(int n) { _searchSteps = clampInt("searchSteps", n, 1, 8); touch(); }

@@ -20,7 +20,7 @@ std::string describeSettings(const WaterSettings& s)
     else o << "k " << s.getAttenuation();
     o << ", tex " << s.getReflectionTextureSize()
       << ", glow " << (s.getGlowEnabled() ? "on" : "off")
-      << ", underwater " << (s.getUnderwaterModel() == WaterSettings::UNDERWATER_THESIS ? "thesis" : "physical");
+      << ", underwater " << WaterSettings::underwaterModelName(s.getUnderwaterModel());
     return o.str();
 }
 

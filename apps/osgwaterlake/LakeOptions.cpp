@@ -135,19 +135,14 @@ bool LakeOptions::read(osg::ArgumentParser& args)
     if (args.read("--no-refraction")) _setters.push_back([](WaterSettings& w) { w.setRefractionEnabled(false); });
     if (args.read("--no-rotation")) _setters.push_back([](WaterSettings& w) { w.setRefractionCameraRotation(false); });
     if (args.read("--no-caustics")) _setters.push_back([](WaterSettings& w) { w.setCausticsEnabled(false); });
-    if (args.read("--gather", s)) {
-        const WaterSettings::CausticsGather g = s == "copy" ? WaterSettings::GATHER_POINTS_COPY
-                                              : s == "texture" ? WaterSettings::GATHER_POINTS_TEXTURE
-                                              : s == "cpu" ? WaterSettings::GATHER_CPU : WaterSettings::GATHER_AUTO;
-        if (g == WaterSettings::GATHER_AUTO && s != "auto") { std::cerr << "error: --gather auto|copy|texture|cpu" << std::endl; return false; }
-        _setters.push_back([g](WaterSettings& w) { w.setCausticsGather(g); });
-    }
+    if (!readEnumOption(args, "--gather", "auto|copy|texture|cpu", WaterSettings::causticsGatherFromName,
+                        &WaterSettings::setCausticsGather, _setters))
+        return false;
     if (args.read("--caustics-size", n)) _setters.push_back([n](WaterSettings& w) { w.setCausticsResolution(n); });
     if (args.read("--photons", n)) _setters.push_back([n](WaterSettings& w) { w.setPhotonGridSize(n); });
-    if (args.read("--underwater-model", s)) {
-        if (s != "physical" && s != "thesis") { std::cerr << "error: --underwater-model physical|thesis" << std::endl; return false; }
-        _setters.push_back([s](WaterSettings& w) { w.setUnderwaterModel(s == "thesis" ? WaterSettings::UNDERWATER_THESIS : WaterSettings::UNDERWATER_PHYSICAL); });
-    }
+    if (!readEnumOption(args, "--underwater-model", "physical|thesis", WaterSettings::underwaterModelFromName,
+                        &WaterSettings::setUnderwaterModel, _setters))
+        return false;
     if (args.read("--no-glow")) _setters.push_back([](WaterSettings& w) { w.setGlowEnabled(false); });
     if (args.read("--glow", f)) _setters.push_back([f](WaterSettings& w) { w.setGlowIntensity(f); });
     if (args.read("--sun", f, g, h)) _setters.push_back([f, g, h](WaterSettings& w) { w.setSunDirection(osg::Vec3(f, g, h)); });
