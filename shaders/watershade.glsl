@@ -3,8 +3,8 @@
 // W = U + c R, depth attenuation, Fresnel, final mix (eq. 9). Shared by the surface (water.frag)
 // and the near-plane cap (cap.frag), which shades the surface where the near plane cut it away.
 // The includer lists OSGWATER_EYE_BELOW, OSGWATER_ONE_STEP, OSGWATER_REFRACTION_PLANE,
-// OSGWATER_REFLECTION_PLANE, OSGWATER_FRESNEL, OSGWATER_UNDERWATER,
-// OSGWATER_NO_REFLECTION, OSGWATER_NO_REFRACTION, OSGWATER_DEBUG in its import_defines.
+// OSGWATER_REFLECTION_PLANE, OSGWATER_FRESNEL, OSGWATER_UNDERWATER, OSGWATER_NO_REFLECTION,
+// OSGWATER_NO_REFRACTION, OSGWATER_SEARCH_STEPS, OSGWATER_DEBUG in its import_defines.
 // Debug output (OSGWATER_DEBUG, see osgWater::DebugOutput), alpha says what rgb holds:
 //   2 a point (local frame), 3 a direction (local frame), -1 nothing found, -2 total internal reflection;
 //   1: the refraction estimate W (the point whose colour is fetched), 2: the reflection lookup
@@ -139,22 +139,19 @@ vec3 owShadeWater(vec3 U, vec3 Nup, vec3 E, out vec4 debugOut)
 #endif
 
     // reflection, eq. 6 / 15 (under water the reflection pass already holds the water's tint)
+    // the lookup point: U + c R (thesis), or the ray's hit on the plane above (DeepWater, from above)
     float c = below ? osgWater_UnderwaterScale : osgWater_ReflectionScale;
-#ifdef OSGWATER_NO_REFLECTION
-    vec3 reflCol = osgWater_WaterColor; // no fetch: the reflection pass did not run
-    F = tir ? 1.0 : 0.0;
-#else
 #if defined(OSGWATER_REFLECTION_PLANE) && !defined(OSGWATER_EYE_BELOW)
     vec4 reflP = owPlanePoint(U, Rr, osgWater_Level + osgWater_LookupPlanes.x);
 #else
     vec4 reflP = vec4(U + c * Rr, 1.0);
 #endif
-    vec3 reflCol = owSampleProjected(osgWater_ReflectionTex, osgWater_ReflectionMVP, reflP, osgWater_WaterColor);
-#endif
-#if defined(OSGWATER_REFLECTION_PLANE) && !defined(OSGWATER_EYE_BELOW)
     vec4 debugRefl = vec4(reflP.xyz, reflP.w > 0.5 ? 2.0 : 3.0);
+#ifdef OSGWATER_NO_REFLECTION
+    vec3 reflCol = osgWater_WaterColor; // no fetch: the reflection pass did not run
+    F = tir ? 1.0 : 0.0;
 #else
-    vec4 debugRefl = vec4(U + c * Rr, 2.0);
+    vec3 reflCol = owSampleProjected(osgWater_ReflectionTex, osgWater_ReflectionMVP, reflP, osgWater_WaterColor);
 #endif
 
     vec3 refrCol = osgWater_WaterColor;

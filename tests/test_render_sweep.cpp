@@ -67,7 +67,8 @@ void buildScene(WaterNode* water, int kind)
 // --- the axes ------------------------------------------------------------------------------------
 // Expensive ones (new targets, recompiled programs) change per group of configurations...
 struct Group {
-    int scene, steps; // steps 0: one-step lookup
+    int scene, steps; // steps 0: one-step lookup (or the plane offset, with planeLookups)
+    bool planeLookups; // the plane-offset refraction (when steps is 0) and reflection lookups
     WaterSettings::FresnelModel fresnel;
     WaterSettings::UnderwaterModel underwater;
     int gather;       // -1 caustics off, else a CausticsGather
@@ -106,6 +107,7 @@ std::vector<Group> groups()
         Group x;
         x.scene = int(i % NUM_SCENES);
         x.steps = int((i * 7) % 9);
+        x.planeLookups = i % 3 == 1;
         x.fresnel = pick(fresnel, i / 5);
         x.underwater = pick(under, i / 3);
         x.gather = pick(gathers, i / 2);
@@ -158,7 +160,9 @@ std::vector<Wave> scaledWaves(double total)
 std::string describe(const Group& g, const Config& c)
 {
     std::ostringstream s;
-    s << sceneName(g.scene) << ", " << (g.steps ? "iterative " + std::to_string(g.steps) : std::string("one-step"))
+    s << sceneName(g.scene) << ", "
+      << (g.steps ? "iterative " + std::to_string(g.steps) : std::string(g.planeLookups ? "plane" : "one-step"))
+      << (g.planeLookups ? ", plane reflection" : "")
       << ", fresnel " << g.fresnel << ", underwater " << g.underwater << ", gather " << g.gather << ", textures "
       << g.textureSize << ", photons " << g.photonGrid << ", viewport " << g.viewport << ", rotation " << g.rotation
       << ", glow " << g.glow << ", debug " << g.debug << "; eye height " << c.eyeHeight << ", pitch " << c.pitch
@@ -170,7 +174,9 @@ std::string describe(const Group& g, const Config& c)
 void apply(WaterNode* water, const Group& g)
 {
     WaterSettings* s = water->getSettings();
-    s->setRefractionLookup(g.steps ? WaterSettings::ITERATIVE : WaterSettings::ONE_STEP);
+    s->setRefractionLookup(g.steps ? WaterSettings::ITERATIVE
+                           : g.planeLookups ? WaterSettings::PLANE_OFFSET : WaterSettings::ONE_STEP);
+    s->setReflectionLookup(g.planeLookups ? WaterSettings::REFLECTION_PLANE : WaterSettings::REFLECTION_OFFSET);
     s->setSearchSteps(std::max(g.steps, 1));
     s->setFresnelModel(g.fresnel);
     s->setUnderwaterModel(g.underwater);
