@@ -178,9 +178,19 @@ void CausticsCamera::markDepthDrawn(unsigned int context)
     _depthDrawn = true;
 }
 
-WaterSettings::CausticsGather CausticsCamera::resolveGather(WaterSettings::CausticsGather wanted,
+WaterSettings::CausticsGather CausticsCamera::resolveGather(const WaterSettings& settings,
                                                             const CausticsSupport& support)
 {
+    const WaterSettings::CausticsGather wanted = settings.getCausticsGather();
+    const WaterSettings::CausticsMethod method = settings.getCausticsMethod();
+    const bool supersampled = settings.getCausticsSupersampling();
+    if ((method != _gather->getCausticsMethod() || supersampled != _gather->getSupersampled()) &&
+        _activeGather != WaterSettings::GATHER_AUTO) {
+        // the paths' speeds differ by method and passes: the automatic choice is made again
+        _trial = _trialFrame = 0;
+        _trialMs.clear();
+        _autoChoice = -1;
+    }
     WaterSettings::CausticsGather g = wanted;
     if (wanted == WaterSettings::GATHER_AUTO) g = autoGather(support);
     else if (!support.supports(wanted)) {
@@ -198,7 +208,7 @@ WaterSettings::CausticsGather CausticsCamera::resolveGather(WaterSettings::Caust
         OSG_DEBUG << "osgWater: caustics gather: " << gatherName(g) << std::endl;
         _activeGather = g;
     }
-    _gather->setMethod(g);
+    _gather->setMethod(g, method, supersampled);
     return g;
 }
 

@@ -7,6 +7,7 @@
 #include <osg/GLExtensions>
 #include <osg/Point>
 #include <osg/State>
+#include <map>
 #include <vector>
 
 using namespace osgWater;
@@ -17,14 +18,27 @@ namespace {
 #define GL_PIXEL_PACK_BUFFER_ARB 0x88EB
 #endif
 
-// n points, one per photon texel; the vertex array is what the shader reads per point.
-osg::Geometry* photonPoints(osg::Array* vertices, unsigned int n)
+// One photon per vertex, the vertex array being what the shader reads per photon: n points, or
+// the area-ratio mesh over the grid x grid photon texels (two triangles per cell, in the order of
+// osgWater::meshPhotons).
+osg::Geometry* photonGeometry(osg::Array* vertices, int grid, WaterSettings::CausticsMethod method)
 {
     osg::Geometry* g = new osg::Geometry;
     g->setUseDisplayList(false);
     g->setUseVertexBufferObjects(true);
     g->setVertexArray(vertices);
-    g->addPrimitiveSet(new osg::DrawArrays(GL_POINTS, 0, n));
+    if (method == WaterSettings::CAUSTICS_AREA_MESH) {
+        osg::DrawElementsUInt* cells = new osg::DrawElementsUInt(GL_TRIANGLES);
+        cells->reserve(6u * unsigned(grid - 1) * unsigned(grid - 1));
+        for (int j = 0; j + 1 < grid; ++j)
+            for (int i = 0; i + 1 < grid; ++i) {
+                const unsigned int a = unsigned(j * grid + i), b = a + 1, c = b + unsigned(grid), d = a + unsigned(grid);
+                for (unsigned int v : { a, b, c, a, c, d }) cells->push_back(v);
+            }
+        g->addPrimitiveSet(cells);
+    } else {
+        g->addPrimitiveSet(new osg::DrawArrays(GL_POINTS, 0, grid * grid));
+    }
     g->setCullingActive(false); // its coordinates are photon data, not positions
     return g;
 }
@@ -44,7 +58,11 @@ public:
         const osg::Array* a = g->getVertexArray();
         osg::GLBufferObject* glbo = a->getOrCreateGLBufferObject(state.getContextID());
         osg::GLExtensions* ext = state.get<osg::GLExtensions>();
-        if (glbo && ext) {
+        // the supersampled gather draws the same points four times: one copy a frame is enough
+        const unsigned int frame = state.getFrameStamp() ? state.getFrameStamp()->getFrameNumber() : 0u;
+        unsigned int& copied = _copiedFrame[state.getContextID()];
+        if (glbo && ext && (copied != frame || frame == 0u)) {
+            copied = frame;
             if (glbo->isDirty()) glbo->compileBuffer(); // allocates it once
             state.unbindPixelBufferObject();
             state.setActiveTextureUnit(UNIT_PASS_INPUT);
@@ -59,22 +77,25 @@ public:
 
 private:
     osg::ref_ptr<osg::Texture2D> _photons;
+    mutable std::map<unsigned int, unsigned int> _copiedFrame; // context -> frame copied last (draw threads own a context each)
 };
 
 // GATHER_CPU: thesis §8.1's CPU approach.
 class CpuGather : public osg::Drawable
 {
 public:
-    CpuGather() : _grid(1), _res(1), _scale(1.0f) {}
-    CpuGather(osg::Texture2D* photons, int gridSize, osg::Texture2D* caustics, int resolution, float scale)
-        : _photons(photons), _caustics(caustics), _grid(gridSize), _res(resolution), _scale(scale)
+    CpuGather() : _grid(1), _res(1), _scale(1.0f), _mesh(false), _supersampled(false) {}
+    CpuGather(osg::Texture2D* photons, int gridSize, osg::Texture2D* caustics, int resolution, float scale,
+              WaterSettings::CausticsMethod method, bool supersampled)
+        : _photons(photons), _caustics(caustics), _grid(gridSize), _res(resolution), _scale(scale),
+          _mesh(method == WaterSettings::CAUSTICS_AREA_MESH), _supersampled(supersampled)
     {
         setUseDisplayList(false);
         setCullingActive(false);
     }
     CpuGather(const CpuGather& o, const osg::CopyOp& op = osg::CopyOp::SHALLOW_COPY)
         : osg::Drawable(o, op), _photons(o._photons), _caustics(o._caustics), _grid(o._grid), _res(o._res),
-          _scale(o._scale) {}
+          _scale(o._scale), _mesh(o._mesh), _supersampled(o._supersampled) {}
     META_Object(osgWater, CpuGather)
 
     void drawImplementation(osg::RenderInfo& ri) const override
@@ -88,8 +109,16 @@ public:
         state.applyTextureAttribute(UNIT_PASS_INPUT, _photons.get());
         glPixelStorei(GL_PACK_ALIGNMENT, 4);
         glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_FLOAT, _in.data());
-        const float weight = float(_res) * _res / (float(_grid) * _grid) / _scale;
-        splatPhotons(_in.data(), std::size_t(_grid) * _grid, weight, _out.data(), _res);
+        const GatherShift once;
+        const GatherShift* shifts = _supersampled ? kSupersampleShifts : &once;
+        for (int pass = 0; pass < (_supersampled ? 4 : 1); ++pass) {
+            if (_mesh) {
+                meshPhotons(_in.data(), _grid, _scale, _out.data(), _res, shifts[pass]);
+            } else {
+                const float weight = float(_res) * _res / (float(_grid) * _grid) / _scale;
+                splatPhotons(_in.data(), std::size_t(_grid) * _grid, weight, _out.data(), _res, shifts[pass]);
+            }
+        }
         state.applyTextureAttribute(UNIT_PASS_INPUT, _caustics.get());
         glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
         glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, _res, _res, GL_RED, GL_FLOAT, _out.data());
@@ -99,6 +128,7 @@ protected:
     osg::ref_ptr<osg::Texture2D> _photons, _caustics;
     int _grid, _res;
     float _scale;
+    bool _mesh, _supersampled;
     mutable std::vector<float> _in, _out;
 };
 
@@ -113,8 +143,8 @@ osg::Geode* geodeOf(osg::Drawable* d)
 }
 
 PhotonGather::PhotonGather(osg::Texture2D* photons, int gridSize, int resolution, bool floatTarget)
-    : _method(WaterSettings::GATHER_AUTO), _resolution(resolution),
-      _valueScale(floatTarget ? 1.0f : 16.0f)
+    : _method(WaterSettings::GATHER_AUTO), _causticsMethod(WaterSettings::CAUSTICS_PHOTONS), _grid(gridSize),
+      _resolution(resolution), _valueScale(floatTarget ? 1.0f : 16.0f), _photons(photons)
 {
     setName("osgWater.PhotonGather");
     setUpPassTarget(this, resolution, resolution, PASS_GATHER);
@@ -139,47 +169,80 @@ PhotonGather::PhotonGather(osg::Texture2D* photons, int gridSize, int resolution
                                     float(resolution) * resolution / (float(gridSize) * gridSize) / _valueScale));
     ss->addUniform(new osg::Uniform("osgWater_CausticsSize", float(resolution)));
     ss->addUniform(new osg::Uniform("osgWater_Photons", int(UNIT_PASS_INPUT)));
-
-    const unsigned int n = unsigned(gridSize) * unsigned(gridSize);
-    osg::ref_ptr<osg::Vec4Array> copyTarget = new osg::Vec4Array(n);
-    osg::Geometry* copyPoints = photonPoints(copyTarget.get(), n);
-    copyTarget->getVertexBufferObject()->setUsage(GL_STREAM_COPY_ARB);
-    copyPoints->setDrawCallback(new CopyPhotonsIntoVertexBuffer(photons));
-    _copySplat = geodeOf(copyPoints);
-
-    osg::ref_ptr<osg::Vec2Array> texels = new osg::Vec2Array(n);
-    for (unsigned int i = 0; i < n; ++i) (*texels)[i].set(float(i % gridSize), float(i / gridSize));
-    _textureSplat = geodeOf(photonPoints(texels.get(), n));
-    _textureSplat->getOrCreateStateSet()->setTextureAttribute(UNIT_PASS_INPUT, photons);
-    _textureSplat->getOrCreateStateSet()->setDefine("OSGWATER_SPLAT_TEXTURE");
-
-    _cpuGather = geodeOf(new CpuGather(photons, gridSize, _caustics.get(), resolution, _valueScale));
-
-    addChild(_copySplat.get());
-    addChild(_textureSplat.get());
-    addChild(_cpuGather.get());
-    // nothing drawn until CausticsCamera::resolveGather() chose
-    _copySplat->setNodeMask(0u);
-    _textureSplat->setNodeMask(0u);
-    _cpuGather->setNodeMask(0u);
+    ss->addUniform(new osg::Uniform("osgWater_PhotonGrid", float(gridSize)));
+    ss->addUniform(new osg::Uniform("osgWater_GatherShift", osg::Vec3f(0.0f, 0.0f, 1.0f))); // one pass, unshifted
+    // the paths are made when first chosen (setMethod()): nothing is drawn until then
 }
 
-void PhotonGather::setMethod(WaterSettings::CausticsGather m)
+osg::Group* PhotonGather::makePath(const PathKey& key)
 {
-    if (m == _method) return;
-    _method = m;
+    const WaterSettings::CausticsGather gather = std::get<0>(key);
+    const WaterSettings::CausticsMethod method = std::get<1>(key);
+    const bool supersampled = std::get<2>(key);
+    const unsigned int n = unsigned(_grid) * unsigned(_grid);
+    osg::ref_ptr<osg::Drawable> draw;
+    osg::ref_ptr<osg::StateSet> state = new osg::StateSet;
+    switch (gather) {
+    case WaterSettings::GATHER_POINTS_COPY: {
+        osg::ref_ptr<osg::Vec4Array> copyTarget = new osg::Vec4Array(n);
+        osg::Geometry* g = photonGeometry(copyTarget.get(), _grid, method);
+        copyTarget->getVertexBufferObject()->setUsage(GL_STREAM_COPY_ARB);
+        g->setDrawCallback(new CopyPhotonsIntoVertexBuffer(_photons.get()));
+        draw = g;
+        break;
+    }
+    case WaterSettings::GATHER_POINTS_TEXTURE: {
+        osg::ref_ptr<osg::Vec2Array> texels = new osg::Vec2Array(n);
+        for (unsigned int i = 0; i < n; ++i) (*texels)[i].set(float(i % unsigned(_grid)), float(i / unsigned(_grid)));
+        draw = photonGeometry(texels.get(), _grid, method);
+        state->setTextureAttribute(UNIT_PASS_INPUT, _photons.get());
+        state->setDefine("OSGWATER_SPLAT_TEXTURE");
+        break;
+    }
+    default: // the CPU runs the supersampling's four passes itself
+        draw = new CpuGather(_photons.get(), _grid, _caustics.get(), _resolution, _valueScale, method, supersampled);
+        break;
+    }
+    if (method == WaterSettings::CAUSTICS_AREA_MESH) state->setDefine("OSGWATER_AREA_MESH");
+    osg::Group* path = new osg::Group;
+    path->setStateSet(state.get());
+    path->setCullingActive(false);
+    if (supersampled && gather != WaterSettings::GATHER_CPU) {
+        // DeepWater's 2x2 supersampling: the same draw four times, each shifted and weighted
+        for (const GatherShift& shift : kSupersampleShifts) {
+            osg::Geode* pass = geodeOf(draw.get());
+            pass->getOrCreateStateSet()->addUniform(
+                new osg::Uniform("osgWater_GatherShift", osg::Vec3f(shift.x, shift.y, shift.weight)));
+            path->addChild(pass);
+        }
+    } else {
+        path->addChild(geodeOf(draw.get()));
+    }
+    path->setNodeMask(0u);
+    addChild(path);
+    return path;
+}
+
+void PhotonGather::setMethod(WaterSettings::CausticsGather gather, WaterSettings::CausticsMethod method,
+                            bool supersampled)
+{
+    if (gather == _method && method == _causticsMethod && supersampled == _supersampled) return;
+    _method = gather;
+    _causticsMethod = method;
+    _supersampled = supersampled;
     // the splat program's variants of the paths tried before are not needed any more
     getStateSet()->getAttribute(osg::StateAttribute::PROGRAM)->releaseGLObjects(nullptr);
-    const std::pair<osg::Geode*, WaterSettings::CausticsGather> paths[] = {
-        { _copySplat.get(), WaterSettings::GATHER_POINTS_COPY },
-        { _textureSplat.get(), WaterSettings::GATHER_POINTS_TEXTURE },
-        { _cpuGather.get(), WaterSettings::GATHER_CPU } };
-    for (const auto& p : paths) {
-        const bool on = p.second == m;
+    const PathKey wanted(gather, method, supersampled);
+    if (gather != WaterSettings::GATHER_AUTO && !_paths.count(wanted)) _paths[wanted] = makePath(wanted);
+    for (const auto& p : _paths) {
+        osg::Group* path = p.second.get();
+        const bool on = p.first == wanted;
         // a path switched off keeps no GL buffers (the automatic choice tries every path once);
-        // its drawables only: the geode's state holds the photon target, which stays
-        if (!on && p.first->getNodeMask() != 0u)
-            for (unsigned int i = 0; i < p.first->getNumDrawables(); ++i) p.first->getDrawable(i)->releaseGLObjects(nullptr);
-        p.first->setNodeMask(on ? ~0u : 0u);
+        // its drawables only: the path's state holds the photon target, which stays
+        if (!on && path->getNodeMask() != 0u)
+            for (unsigned int i = 0; i < path->getNumChildren(); ++i)
+                if (osg::Geode* pass = path->getChild(i)->asGeode())
+                    for (unsigned int d = 0; d < pass->getNumDrawables(); ++d) pass->getDrawable(d)->releaseGLObjects(nullptr);
+        path->setNodeMask(on ? ~0u : 0u);
     }
 }

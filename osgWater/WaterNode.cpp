@@ -555,7 +555,7 @@ bool WaterNode::claimCaustics(const ViewFrame& v, const PassPlan& plan)
     if (plan.runs(PASS_SUN_DEPTH)) _caustics->markDepthDrawn(v.contextID);
     if (_gatherResolved != v.frameNumber) { // the gather follows frames that render caustics
         _gatherResolved = v.frameNumber;
-        _caustics->resolveGather(_settings->getCausticsGather(), v.support);
+        _caustics->resolveGather(*_settings, v.support);
     }
     return true;
 }

@@ -51,7 +51,8 @@ WaterSettings::WaterSettings()
       _causticsMotionTolerance(0.5f),
       _refractionCameraRotation(true), _reflectionEnabled(true), _refractionEnabled(true),
       _causticsEnabled(true), _causticsFiltering(true), _causticsFocused(true), _causticsResolution(256), _photonGridSize(512),
-      _causticsIntensity(1.0f), _causticsGather(GATHER_AUTO),
+      _causticsIntensity(1.0f), _causticsGather(GATHER_AUTO), _causticsMethod(CAUSTICS_PHOTONS),
+      _causticsSupersampling(false),
       _underwaterModel(UNDERWATER_PHYSICAL), _glowEnabled(true), _glowIntensity(1.0f), _glowRadius(3.0f),
       _glowResolution(0.25f), _glowExponent(200.0f),
       _sunDirection(defaultSunDirection()), _sunColor(1.0f, 1.0f, 0.9f), _ambientColor(0.35f, 0.38f, 0.45f),
@@ -91,6 +92,7 @@ WaterSettings::WaterSettings(const WaterSettings& o, const osg::CopyOp& copyop)
       _causticsFocused(o._causticsFocused),
       _causticsResolution(o._causticsResolution), _photonGridSize(o._photonGridSize),
       _causticsIntensity(o._causticsIntensity), _causticsGather(o._causticsGather),
+      _causticsMethod(o._causticsMethod), _causticsSupersampling(o._causticsSupersampling),
       _underwaterModel(o._underwaterModel), _glowEnabled(o._glowEnabled), _glowIntensity(o._glowIntensity),
       _glowRadius(o._glowRadius), _glowResolution(o._glowResolution), _glowExponent(o._glowExponent),
       _sunDirection(o._sunDirection), _sunColor(o._sunColor), _ambientColor(o._ambientColor),
@@ -121,6 +123,7 @@ void WaterSettings::setReflectionPlaneHeight(float m) { _reflectionPlaneHeight =
 void WaterSettings::setRefractionPlaneDepth(float m) { _refractionPlaneDepth = clampOr("refractionPlaneDepth", m, 0.0f, 10000.0f, 0.0f); touch(); }
 void WaterSettings::setUnderwaterModel(UnderwaterModel m) { _underwaterModel = validEnum("underwaterModel", m, UNDERWATER_THESIS, UNDERWATER_PHYSICAL); touch(); }
 void WaterSettings::setCausticsGather(CausticsGather g) { _causticsGather = validEnum("causticsGather", g, GATHER_CPU, GATHER_AUTO); touch(); }
+void WaterSettings::setCausticsMethod(CausticsMethod m) { _causticsMethod = validEnum("causticsMethod", m, CAUSTICS_AREA_MESH, CAUSTICS_PHOTONS); touch(); }
 void WaterSettings::setAirIOR(float v) { _airIOR = clampOr("airIOR", v, 1.0f, 3.0f, 1.0f); touch(); }
 void WaterSettings::setWaterIOR(float v) { _waterIOR = clampOr("waterIOR", v, 1.0f, 3.0f, 1.333f); touch(); }
 void WaterSettings::setWaterColor(const osg::Vec3& c) { _waterColor = clampColor("waterColor", c, osg::Vec3(0.0f, 0.2f, 0.1f), 1.0f); touch(); }
@@ -135,6 +138,7 @@ const char* const kRefractionLookupNames[] = { "one-step", "iterative", "plane" 
 const char* const kReflectionLookupNames[] = { "offset", "plane" };
 const char* const kUnderwaterModelNames[] = { "physical", "thesis" };
 const char* const kCausticsGatherNames[] = { "auto", "copy", "texture", "cpu" };
+const char* const kCausticsMethodNames[] = { "photons", "mesh" };
 
 template <typename E, size_t N>
 const char* nameOf(const char* const (&names)[N], E value)
@@ -175,6 +179,11 @@ const char* WaterSettings::causticsGatherName(CausticsGather g) { return nameOf(
 bool WaterSettings::causticsGatherFromName(const std::string& name, CausticsGather& g)
 {
     return valueOf(kCausticsGatherNames, name, g);
+}
+const char* WaterSettings::causticsMethodName(CausticsMethod m) { return nameOf(kCausticsMethodNames, m); }
+bool WaterSettings::causticsMethodFromName(const std::string& name, CausticsMethod& m)
+{
+    return valueOf(kCausticsMethodNames, name, m);
 }
 void WaterSettings::setReflectionScale(float c) { _reflectionScale = clampOr("reflectionScale", c, 0.0f, 1000.0f, 1.0f); touch(); }
 void WaterSettings::setSearchSteps(int n) { _searchSteps = clampInt("searchSteps", n, 1, 8); touch(); }

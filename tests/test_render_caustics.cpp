@@ -1,7 +1,8 @@
 // Caustics (thesis ch. 8): the caustics texture holds the sun power per area seen from the sun,
 // in units of the sun's irradiance. Flat water must give the transmitted, attenuated irradiance
 // everywhere; a lens-shaped bump must focus where geometric optics says and conserve energy; the
-// three gather paths must agree; no target may hold NaN/Inf, whatever the sun's elevation.
+// three gather paths must agree; no target may hold NaN/Inf, whatever the sun's elevation. Each
+// for both methods: photon splatting and the area-ratio mesh (RenderCausticsMethod).
 #include "GLHarness.h"
 #include <osgWater/WaterNode>
 #include <osgWater/Optics>
@@ -140,6 +141,11 @@ struct CausticsScene {
 
 double value(const osg::Image* img, int i, int j) { return pixel(img, i, j)[0]; }
 
+std::string methodName(const testing::TestParamInfo<WaterSettings::CausticsMethod>& info)
+{
+    return info.param == WaterSettings::CAUSTICS_AREA_MESH ? "AreaMesh" : "Photons";
+}
+
 // Transmitted, attenuated irradiance under flat water of depth H, sun at cosine cosL (Schlick, q 5),
 // extinction k per metre of the sun's path.
 double flatIrradiance(double cosL, double H, double k = kK)
@@ -150,13 +156,20 @@ double flatIrradiance(double cosL, double H, double k = kK)
     return (1.0 - F) * std::exp(-k * H / cosT);
 }
 
+
+class RenderCausticsMethod : public testing::TestWithParam<WaterSettings::CausticsMethod> {};
+
 }
 
-TEST(RenderCaustics, FlatWaterGivesTheTransmittedIrradianceEverywhere)
+INSTANTIATE_TEST_SUITE_P(Caustics, RenderCausticsMethod,
+                         testing::Values(WaterSettings::CAUSTICS_PHOTONS, WaterSettings::CAUSTICS_AREA_MESH), methodName);
+
+TEST_P(RenderCausticsMethod, FlatWaterGivesTheTransmittedIrradianceEverywhere)
 {
     for (const osg::Vec3 sun : { osg::Vec3(0, 0, 1), osg::Vec3(0.3f, 0.2f, 0.93f) }) {
         CausticsScene sc(20.0f, 64, 128, sun, -2.0f);
         REQUIRE_GL(sc.h);
+        sc.water->getSettings()->setCausticsMethod(GetParam());
         osg::ref_ptr<osg::Image> img = sc.render();
         ASSERT_TRUE(img.valid()) << "no caustics pass ran";
         osg::Vec3 L = sun;
@@ -231,7 +244,73 @@ TEST(RenderCaustics, FocusedOnTheLitWaterTheyKeepTheirSpacingWithFewerPhotons)
     EXPECT_NEAR(area[1], area[0], 0.25 * area[0]) << "the texel's size on the bed is kept";
 }
 
-TEST(RenderCaustics, LensBumpFocusesAtTheAnalyticFocusAndConservesEnergy)
+TEST_P(RenderCausticsMethod, SupersampledTheGatherKeepsTheIrradianceAndTheGpuPathsTheirMirror)
+{
+    // flat water: the four shifted quarter-energy passes give the same uniform irradiance
+    const osg::Vec3 sun(0.3f, 0.2f, 0.93f);
+    osg::Vec3 L = sun;
+    L.normalize();
+    const double expected = flatIrradiance(L.z(), 2.0);
+    {
+        CausticsScene sc(20.0f, 64, 128, sun, -2.0f);
+        REQUIRE_GL(sc.h);
+        sc.water->getSettings()->setCausticsMethod(GetParam());
+        sc.water->getSettings()->setCausticsSupersampling(true);
+        osg::ref_ptr<osg::Image> img = sc.render();
+        ASSERT_TRUE(img.valid());
+        EXPECT_TRUE(sc.water->getCausticsCamera()->getGather()->getSupersampled());
+        double sum = 0, lo = 1e30, hi = -1e30;
+        int n = 0;
+        for (int j = 0; j < img->t(); ++j)
+            for (int i = 0; i < img->s(); ++i) {
+                const osg::Vec3d p = sc.bedPoint(img.get(), i, j);
+                if (std::fabs(p.x()) > 7 || std::fabs(p.y()) > 7) continue;
+                const double c = value(img.get(), i, j);
+                sum += c;
+                lo = std::min(lo, c);
+                hi = std::max(hi, c);
+                ++n;
+            }
+        ASSERT_GT(n, 500);
+        EXPECT_NEAR(sum / n, expected, 0.02 * expected);
+        EXPECT_LE(hi - lo, 0.02 * expected);
+    }
+    // a lens: every GPU path's four passes against the CPU's (the mirror)
+    const float size = 8.0f;
+    CausticsScene sc(size, 64, 128, osg::Vec3(0.2f, 0.1f, 0.97f), -2.0f, bumpMesh(size, 120, 0.5f, 0.5f, 0.25f, 0.5f));
+    REQUIRE_GL(sc.h);
+    sc.water->getSettings()->setCausticsMethod(GetParam());
+    sc.water->getSettings()->setCausticsSupersampling(true);
+    osg::ref_ptr<osg::Image> ref, single;
+    double refMax = 0;
+    for (WaterSettings::CausticsGather g : { WaterSettings::GATHER_CPU, WaterSettings::GATHER_POINTS_COPY,
+                                             WaterSettings::GATHER_POINTS_TEXTURE }) {
+        sc.setGather(g);
+        osg::ref_ptr<osg::Image> img = sc.render();
+        ASSERT_TRUE(img.valid());
+        if (!ref.valid()) {
+            ref = img;
+            for (int j = 0; j < img->t(); ++j)
+                for (int i = 0; i < img->s(); ++i) refMax = std::max(refMax, value(img.get(), i, j));
+            continue;
+        }
+        double worst = 0;
+        for (int j = 0; j < img->t(); ++j)
+            for (int i = 0; i < img->s(); ++i)
+                worst = std::max(worst, std::fabs(value(img.get(), i, j) - value(ref.get(), i, j)));
+        EXPECT_LE(worst, 0.02 * refMax) << CausticsCamera::gatherName(g) << " vs CPU";
+    }
+    // and the four passes are not one: the single pass differs from them somewhere
+    sc.water->getSettings()->setCausticsSupersampling(false);
+    single = sc.render();
+    double differ = 0;
+    for (int j = 0; j < single->t(); ++j)
+        for (int i = 0; i < single->s(); ++i)
+            differ = std::max(differ, std::fabs(value(single.get(), i, j) - value(ref.get(), i, j)));
+    EXPECT_GT(differ, 0.02 * refMax);
+}
+
+TEST_P(RenderCausticsMethod, LensBumpFocusesAtTheAnalyticFocusAndConservesEnergy)
 {
     // Paraxial focus of a refracting surface of apex curvature radius r = s^2 / h0 (air -> water):
     // f = n2 r / (n2 - n1) below the apex; an overhead sun focuses on the bump's axis there.
@@ -240,6 +319,7 @@ TEST(RenderCaustics, LensBumpFocusesAtTheAnalyticFocusAndConservesEnergy)
     const float bed = float(h0 - f);
     CausticsScene sc(size, 128, 256, osg::Vec3(0, 0, 1), bed, bumpMesh(size, 200, x0, y0, h0, s));
     REQUIRE_GL(sc.h);
+    sc.water->getSettings()->setCausticsMethod(GetParam());
     osg::ref_ptr<osg::Image> img = sc.render();
     ASSERT_TRUE(img.valid());
     int bi = 0, bj = 0;
@@ -274,11 +354,12 @@ TEST(RenderCaustics, LensBumpFocusesAtTheAnalyticFocusAndConservesEnergy)
     EXPECT_NEAR(gathered, expected, 0.02 * expected);
 }
 
-TEST(RenderCaustics, TheThreeGatherPathsAgree)
+TEST_P(RenderCausticsMethod, TheThreeGatherPathsAgree)
 {
     const float size = 8.0f;
     CausticsScene sc(size, 64, 128, osg::Vec3(0.2f, 0.1f, 0.97f), -2.0f, bumpMesh(size, 120, 0.5f, 0.5f, 0.25f, 0.5f));
     REQUIRE_GL(sc.h);
+    sc.water->getSettings()->setCausticsMethod(GetParam());
     osg::ref_ptr<osg::Image> ref;
     double refMax = 0;
     for (WaterSettings::CausticsGather g : { WaterSettings::GATHER_CPU, WaterSettings::GATHER_POINTS_COPY,
@@ -302,7 +383,7 @@ TEST(RenderCaustics, TheThreeGatherPathsAgree)
     }
 }
 
-TEST(RenderCaustics, WithoutFloatTargetsTheCpuFallbackGivesTheSameCaustics)
+TEST_P(RenderCausticsMethod, WithoutFloatTargetsTheCpuFallbackGivesTheSameCaustics)
 {
     const float size = 8.0f;
     osg::ref_ptr<osg::Image> imgs[2];
@@ -311,6 +392,7 @@ TEST(RenderCaustics, WithoutFloatTargetsTheCpuFallbackGivesTheSameCaustics)
         CausticsScene sc(size, 64, 128, osg::Vec3(0, 0, 1), -2.0f, bumpMesh(size, 120, 0.0f, 0.0f, 0.25f, 0.5f));
         if (!sc.h.ok()) unsetenv("OSGWATER_NO_FLOAT_TARGETS");
         REQUIRE_GL(sc.h);
+        sc.water->getSettings()->setCausticsMethod(GetParam());
         imgs[pass] = sc.render();
         unsetenv("OSGWATER_NO_FLOAT_TARGETS");
         ASSERT_TRUE(imgs[pass].valid());
@@ -329,13 +411,14 @@ TEST(RenderCaustics, WithoutFloatTargetsTheCpuFallbackGivesTheSameCaustics)
     }
 }
 
-TEST(RenderCaustics, NoNaNOrInfAtAnySunElevation)
+TEST_P(RenderCausticsMethod, NoNaNOrInfAtAnySunElevation)
 {
     for (double elevation : { 90.0, 45.0, 1.0, 1e-3, 0.0, -10.0 }) {
         const double e = osg::DegreesToRadians(elevation);
         const osg::Vec3 sun(0.0f, float(std::cos(e)), float(std::sin(e)));
         CausticsScene sc(20.0f, 64, 128, sun, -2.0f);
         REQUIRE_GL(sc.h);
+        sc.water->getSettings()->setCausticsMethod(GetParam());
         sc.water->getSettings()->setRefractionEnabled(true);
         sc.water->getSurface()->setWaves({ Wave() });
         sc.h.frame(1e7);

@@ -72,6 +72,7 @@ struct Group {
     WaterSettings::FresnelModel fresnel;
     WaterSettings::UnderwaterModel underwater;
     int gather;       // -1 caustics off, else a CausticsGather
+    bool areaMesh;    // the caustics by the area-ratio mesh (else photon splatting), supersampled every other time
     int textureSize, photonGrid, viewport;
     bool rotation, glow, reflection, refraction;
     DebugOutput debug;
@@ -111,6 +112,7 @@ std::vector<Group> groups()
         x.fresnel = pick(fresnel, i / 5);
         x.underwater = pick(under, i / 3);
         x.gather = pick(gathers, i / 2);
+        x.areaMesh = i % 4 >= 2; // with every gather (which changes every other group)
         // huge targets (8192: clamped to 4096 by the settings, then to the context) cost seconds a
         // frame on a software rasteriser: one group each, the others alternate tiny and small
         x.textureSize = i == 10 ? 8192 : (i % 2 ? 16 : 64);
@@ -163,7 +165,7 @@ std::string describe(const Group& g, const Config& c)
     s << sceneName(g.scene) << ", "
       << (g.steps ? "iterative " + std::to_string(g.steps) : std::string(g.planeLookups ? "plane" : "one-step"))
       << (g.planeLookups ? ", plane reflection" : "")
-      << ", fresnel " << g.fresnel << ", underwater " << g.underwater << ", gather " << g.gather << ", textures "
+      << ", fresnel " << g.fresnel << ", underwater " << g.underwater << ", gather " << g.gather << (g.areaMesh ? " (mesh)" : "") << ", textures "
       << g.textureSize << ", photons " << g.photonGrid << ", viewport " << g.viewport << ", rotation " << g.rotation
       << ", glow " << g.glow << ", debug " << g.debug << "; eye height " << c.eyeHeight << ", pitch " << c.pitch
       << ", yaw " << c.yaw << ", sun " << c.sunElevation << ", IOR " << c.ior << ", t " << c.time << ", amplitude "
@@ -182,6 +184,8 @@ void apply(WaterNode* water, const Group& g)
     s->setUnderwaterModel(g.underwater);
     s->setCausticsEnabled(g.gather >= 0);
     if (g.gather >= 0) s->setCausticsGather(WaterSettings::CausticsGather(g.gather));
+    s->setCausticsMethod(g.areaMesh ? WaterSettings::CAUSTICS_AREA_MESH : WaterSettings::CAUSTICS_PHOTONS);
+    s->setCausticsSupersampling(g.areaMesh && g.steps % 2 == 1);
     s->setReflectionTextureSize(g.textureSize);
     s->setRefractionTextureSize(g.textureSize);
     s->setCausticsResolution(g.textureSize);

@@ -41,6 +41,11 @@ std::vector<Technique> allTechniques()
                          s.setCausticsEnabled(true);
                          s.setCausticsGather(g);
                      } });
+    t.push_back({ "caustics-mesh", [](WaterSettings& s) { s.setCausticsMethod(WaterSettings::CAUSTICS_AREA_MESH); } });
+    t.push_back({ "caustics-mesh-supersampled", [](WaterSettings& s) {
+                     s.setCausticsMethod(WaterSettings::CAUSTICS_AREA_MESH);
+                     s.setCausticsSupersampling(true);
+                 } });
     t.push_back({ "glow-off", [](WaterSettings& s) { s.setGlowEnabled(false); } });
     t.push_back({ "quality-fast", [](WaterSettings& s) { s.setQuality(WaterSettings::QUALITY_FAST); } });
     t.push_back({ "quality-exact", [](WaterSettings& s) { s.setQuality(WaterSettings::QUALITY_EXACT); } });
@@ -83,12 +88,17 @@ std::string fresnelName(const WaterSettings& s) { return WaterSettings::fresnelM
 std::string causticsName(const WaterSettings& s)
 {
     if (!s.getCausticsEnabled()) return "off";
+    std::string gather;
     switch (s.getCausticsGather()) {
-    case WaterSettings::GATHER_CPU: return "cpu";
-    case WaterSettings::GATHER_POINTS_COPY: return "points-copy";
-    case WaterSettings::GATHER_POINTS_TEXTURE: return "points-texture";
-    default: return "auto";
+    case WaterSettings::GATHER_CPU: gather = "cpu"; break;
+    case WaterSettings::GATHER_POINTS_COPY: gather = "points-copy"; break;
+    case WaterSettings::GATHER_POINTS_TEXTURE: gather = "points-texture"; break;
+    default: gather = "auto"; break;
     }
+    // the method and the supersampling, where not the defaults: "mesh-auto", "mesh-auto-2x2"
+    if (s.getCausticsMethod() != WaterSettings::CAUSTICS_PHOTONS)
+        gather = std::string(WaterSettings::causticsMethodName(s.getCausticsMethod())) + "-" + gather;
+    return s.getCausticsSupersampling() ? gather + "-2x2" : gather;
 }
 
 }

@@ -29,7 +29,8 @@ std::string describeCaustics(const osgWater::WaterNode& water)
     const WaterSettings& s = *water.getSettings();
     if (!s.getCausticsEnabled()) return "off";
     std::ostringstream o;
-    o << osgWater::CausticsCamera::gatherName(water.getActiveCausticsGather())
+    o << WaterSettings::causticsMethodName(s.getCausticsMethod()) << (s.getCausticsSupersampling() ? " 2x2" : "") << ", "
+      << osgWater::CausticsCamera::gatherName(water.getActiveCausticsGather())
       << (s.getCausticsGather() != WaterSettings::GATHER_AUTO ? ""
           : water.getCausticsCamera() && water.getCausticsCamera()->isAutoGatherSettled() ? " (auto)" : " (auto, timing)") << " " << s.getCausticsResolution()
       << "/" << s.getPhotonGridSize();
@@ -61,7 +62,7 @@ public:
                       c ? c->getMilliseconds() : -1.0);
         _text->setText(std::string(line) + describeSettings(*_water->getSettings()) + ", caustics " +
                        describeCaustics(*_water) +
-                       "\nkeys: r reflection  f refraction  t technique  e reflection lookup  +/- steps  m fresnel  o rotation  k caustics  g gather  u under water  n model  l glow  s stats  arrows move");
+                       "\nkeys: r reflection  f refraction  t technique  e reflection lookup  +/- steps  m fresnel  o rotation  k caustics  g gather  a mesh  x 2x2  u under water  n model  l glow  s stats  arrows move");
         traverse(node, nv);
     }
 

@@ -39,6 +39,11 @@ bool WaterKeys::handle(const osgGA::GUIEventAdapter& ea, osgGA::GUIActionAdapter
     case 'g': // auto -> copy -> texture -> cpu -> auto
         s.setCausticsGather(WaterSettings::CausticsGather((int(s.getCausticsGather()) + 1) % 4));
         return true;
+    case 'a':
+        s.setCausticsMethod(s.getCausticsMethod() == WaterSettings::CAUSTICS_PHOTONS ? WaterSettings::CAUSTICS_AREA_MESH
+                                                                                   : WaterSettings::CAUSTICS_PHOTONS);
+        return true;
+    case 'x': s.setCausticsSupersampling(!s.getCausticsSupersampling()); return true;
     default: break;
     }
     auto toggle = _toggles.find(ea.getKey());
@@ -81,6 +86,8 @@ void WaterKeys::getUsage(osg::ApplicationUsage& u) const
     u.addKeyboardMouseBinding("o", "Toggle refraction-camera rotation");
     u.addKeyboardMouseBinding("k", "Toggle caustics");
     u.addKeyboardMouseBinding("g", "Next caustics gather (auto, copy, texture, CPU)");
+    u.addKeyboardMouseBinding("a", "Switch caustics method (photon splatting / area-ratio mesh)");
+    u.addKeyboardMouseBinding("x", "Toggle caustics 2x2 supersampling");
     u.addKeyboardMouseBinding("u", "Go under water / back above it");
     u.addKeyboardMouseBinding("n", "Next underwater model (physical, thesis)");
     u.addKeyboardMouseBinding("l", "Toggle the sun's glow");
