@@ -12,11 +12,16 @@ bool refractionWanted(const FrameFacts& f) { return f.waterInView && f.refractio
 bool waterInView(const FrameFacts& f) { return f.waterInView; }
 bool eyeBelow(const FrameFacts& f) { return f.eyeBelow; }
 bool glowWanted(const FrameFacts& f) { return f.waterInView && f.glowInView; }
+bool environmentToRender(const FrameFacts& f) { return f.environment && f.environmentStale; }
+
+// what the water program reads
+const unsigned kWaterInputs = RES_REFLECTION | RES_REFRACTION | RES_ENVIRONMENT;
 
 // The frame, top to bottom. Pre-render rows draw in this order (renderOrder), overlay rows after
 // the scene's bins in this order (renderBin).
 const PassRow kTable[PASS_COUNT] = {
     // id                   name               stage               reads                        writes                 litScene perView wanted
+    { PASS_ENVIRONMENT,    "environment",     STAGE_PRE_RENDER, 0,                            RES_ENVIRONMENT,       false, false, environmentToRender },
     { PASS_SUN_DEPTH,      "sun depth",       STAGE_PRE_RENDER, 0,                            RES_SUN_DEPTH,         false, false, sunDepthToRender },
     { PASS_PHOTONS,        "photons",         STAGE_PRE_RENDER, RES_SUN_DEPTH,                RES_PHOTONS,           false, false, causticsToRender },
     { PASS_GATHER,         "gather",          STAGE_PRE_RENDER, RES_PHOTONS,                  RES_CAUSTICS,          false, false, causticsToRender },
@@ -25,10 +30,10 @@ const PassRow kTable[PASS_COUNT] = {
     { PASS_GLOW_HIGHLIGHT, "glow highlight",  STAGE_PRE_RENDER, 0,                            RES_GLOW_HIGHLIGHT,    false, true,  glowWanted },
     { PASS_GLOW_BLUR_H,    "glow blur x",     STAGE_PRE_RENDER, RES_GLOW_HIGHLIGHT,           RES_GLOW_HALF_BLURRED, false, true,  always },
     { PASS_GLOW_BLUR_V,    "glow blur y",     STAGE_PRE_RENDER, RES_GLOW_HALF_BLURRED,        RES_GLOW,              false, true,  always },
-    { PASS_SURFACE,        "surface",         STAGE_UNDERLAY,   RES_REFLECTION | RES_REFRACTION, RES_VIEW_IMAGE,     false, true,  waterInView },
+    { PASS_SURFACE,        "surface",         STAGE_UNDERLAY,   kWaterInputs,                 RES_VIEW_IMAGE,        false, true,  waterInView },
     { PASS_SCENE,          "scene",           STAGE_VIEW,       0,                            RES_VIEW_IMAGE,        true,  false, always },
     { PASS_BACKDROP,       "backdrop",        STAGE_OVERLAY,    0,                            RES_VIEW_IMAGE,        false, true,  eyeBelow },
-    { PASS_CAP,            "near-plane cap",  STAGE_OVERLAY,    RES_REFLECTION | RES_REFRACTION, RES_VIEW_IMAGE,     false, true,  waterInView },
+    { PASS_CAP,            "near-plane cap",  STAGE_OVERLAY,    kWaterInputs,                 RES_VIEW_IMAGE,        false, true,  waterInView },
     { PASS_GLOW_COMPOSITE, "glow composite",  STAGE_OVERLAY,    RES_GLOW,                     RES_VIEW_IMAGE,        false, true,  glowWanted },
 };
 
@@ -86,6 +91,7 @@ const char* osgWater::gpuTimeLabel(PassId id)
     switch (id) {
     case PASS_PHOTONS: return "photons + gather";
     case PASS_GLOW_BLUR_H: return "glow blur";
+    case PASS_ENVIRONMENT: // drawn once in a while: no timer of its own
     case PASS_GATHER:
     case PASS_GLOW_BLUR_V:
     case PASS_SCENE:

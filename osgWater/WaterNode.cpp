@@ -34,6 +34,7 @@ WaterNode::WaterNode(const WaterNode& o, const osg::CopyOp& copyop)
     _surfaceTimer = new GpuTimer;
     setSkippingEnabled(o._skipping);
     setPassTimingEnabled(o._passTiming);
+    _userEnvironment = o._userEnvironment; // the user's texture, shared like a child's
     refreshStates();
 }
 
@@ -154,6 +155,10 @@ void WaterNode::resizeGLObjectBuffers(unsigned int maxSize)
     _states.resizeGLObjectBuffers(maxSize);
     _underwater->resizeGLObjectBuffers(maxSize);
     _views.resizeGLObjectBuffers(maxSize);
+    {
+        OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_environmentMutex);
+        if (_environment.valid()) _environment->resizeGLObjectBuffers(maxSize);
+    }
     OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_causticsMutex);
     if (_caustics.valid()) _caustics->resizeGLObjectBuffers(maxSize);
 }
@@ -165,6 +170,11 @@ void WaterNode::releaseGLObjects(osg::State* state) const
     _states.releaseGLObjects(state);
     _underwater->releaseGLObjects(state);
     _views.releaseGLObjects(state);
+    {
+        // a released map holds nothing: EnvironmentMap::stale() sees its texture gone
+        OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_environmentMutex);
+        if (_environment.valid()) _environment->releaseGLObjects(state);
+    }
     OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_causticsMutex);
     if (_caustics.valid()) _caustics->releaseGLObjects(state);
     // released caustics hold nothing any more: the next frame renders them again
@@ -184,7 +194,9 @@ void WaterNode::traverse(osg::NodeVisitor& nv)
         // bounds are computed lazily; views may cull in parallel threads: compute them here, once
         getBound();
         _surface->getBoundingBox();
-        updateSceneFacts();
+        const osg::BoundingSphere children = osg::Group::computeBound();
+        updateSceneFacts(children);
+        updateEnvironment(children);
         return;
     }
     if (osgUtil::CullVisitor* cv = nv.asCullVisitor()) {
@@ -339,6 +351,11 @@ WaterNode::ViewFrame WaterNode::gatherFacts(osgUtil::CullVisitor& cv)
     f.refractionEnabled = s.getRefractionEnabled();
     // never over debug outputs: they are data, and the glow would add light to coordinates
     f.glowInView = _debug == DEBUG_NONE && cv.getViewport() && GlowPasses::highlightInView(ctx, *_surface);
+    {
+        OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_environmentMutex);
+        f.environment = _environment.valid();
+        f.environmentStale = f.environment && _environment->stale(v.contextID);
+    }
 
     v.lighting = _views.getLighting(camera);
     prepareCaustics(v);
@@ -384,6 +401,9 @@ void WaterNode::cullPass(PassId pass, osgUtil::CullVisitor& cv, const ViewFrame&
     osg::StateSet* water = _states.getWaterStateSet();
     ViewPasses* p = v.passes; // null only when the plan runs nothing but the shared rows and the scene
     switch (pass) {
+    case PASS_ENVIRONMENT:
+        if (claimEnvironment(v.contextID)) _environment->accept(cv);
+        break;
     case PASS_SUN_DEPTH:
     case PASS_PHOTONS:
     case PASS_GATHER:
@@ -444,7 +464,7 @@ int WaterNode::fitTexture(const char* what, int size, const CausticsSupport& sup
     return support.maxTextureSize;
 }
 
-void WaterNode::updateSceneFacts()
+void WaterNode::updateSceneFacts(const osg::BoundingSphere& children)
 {
     const WaterSettings& s = *_settings;
     const bool planes = s.getReflectionLookup() == WaterSettings::REFLECTION_PLANE ||
@@ -455,7 +475,7 @@ void WaterNode::updateSceneFacts()
     {
         OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_causticsMutex);
         // the rays along the sun are walked only for what uses them, and again only on a change
-        _sceneBoxes.update(*this, osg::Group::computeBound(), _surface->getBoundingBox(), level + clearance(),
+        _sceneBoxes.update(*this, children, _surface->getBoundingBox(), level + clearance(),
                            s.getSunDirection(), planes || focus);
         lit = _sceneBoxes.litWater();
     }
@@ -465,6 +485,57 @@ void WaterNode::updateSceneFacts()
     if (depth <= 0.0f) depth = lit.box.valid() && lit.meanBedZ < level ? float(level - lit.meanBedZ) : 1.0f;
     _lookupPlanes = osg::Vec2f(std::max(height, 1e-3f), std::max(depth, 1e-3f));
     _states.applyLookupPlanes(_lookupPlanes);
+}
+
+void WaterNode::setEnvironmentMap(osg::TextureCubeMap* map)
+{
+    _userEnvironment = map;
+    updateEnvironment(osg::Group::computeBound());
+}
+
+osg::TextureCubeMap* WaterNode::getEnvironmentMap() const
+{
+    if (!_settings->getEnvironmentMapEnabled()) return nullptr;
+    if (_userEnvironment.valid()) return _userEnvironment.get();
+    return _environment.valid() ? _environment->getTexture() : nullptr;
+}
+
+void WaterNode::dirtyEnvironmentMap()
+{
+    OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_environmentMutex);
+    if (_environment.valid()) _environment->dirty();
+}
+
+void WaterNode::updateEnvironment(const osg::BoundingSphere& children)
+{
+    const WaterSettings& s = *_settings;
+    const bool draw = s.getEnvironmentMapEnabled() && !_userEnvironment.valid();
+    {
+        OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_environmentMutex);
+        if (!draw) {
+            _environment = nullptr;
+        } else {
+            if (!_environment.valid() || _environment->getSize() != s.getEnvironmentMapSize())
+                _environment = new EnvironmentMap(this, _states.getSceneStateSet(), s.getEnvironmentMapSize());
+            // seen from the middle of the surface, just above the crests; lit by the sun alone (no
+            // fog, no caustics: it holds what lies above the water)
+            const osg::BoundingBox& water = _surface->getBoundingBox();
+            SceneLighting l;
+            l.towardsSun = s.getSunDirection();
+            l.level = _surface->getLevel();
+            const osg::Vec3d centre(water.center().x(), water.center().y(), l.level + clearance());
+            _environment->aim(centre, children, l);
+        }
+    }
+    _states.setEnvironmentMap(getEnvironmentMap());
+}
+
+bool WaterNode::claimEnvironment(unsigned int contextID)
+{
+    OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_environmentMutex);
+    if (!_environment.valid() || !_environment->stale(contextID)) return false;
+    _environment->markDrawn(contextID);
+    return true;
 }
 
 double WaterNode::clearance() const

@@ -56,6 +56,7 @@ WaterStateSets::WaterStateSets()
     _water->addUniform(new osg::Uniform("osgWater_ReflectionTex", int(UNIT_REFLECTION)));
     _water->addUniform(new osg::Uniform("osgWater_RefractionTex", int(UNIT_REFRACTION)));
     _water->addUniform(new osg::Uniform("osgWater_RefractionDepth", int(UNIT_REFRACTION_DEPTH)));
+    _water->addUniform(new osg::Uniform("osgWater_EnvironmentTex", int(UNIT_ENVIRONMENT)));
     _water->setDataVariance(osg::Object::DYNAMIC);
     osg::ref_ptr<osg::Uniform> waves = new osg::Uniform(osg::Uniform::FLOAT_VEC4, "osgWater_Waves", WaterSurface::MAX_WAVES);
     osg::ref_ptr<osg::Uniform> phases = new osg::Uniform(osg::Uniform::FLOAT, "osgWater_WavePhases", WaterSurface::MAX_WAVES);
@@ -119,7 +120,8 @@ void WaterStateSets::applySettings(const WaterSettings& s, const WaterSurface& s
     setDefineIf(w, "OSGWATER_REFLECTION_PLANE", s.getReflectionLookup() == WaterSettings::REFLECTION_PLANE);
     w->setDefine("OSGWATER_FRESNEL", std::to_string(int(s.getFresnelModel()))); // the enum's numbers
     w->setDefine("OSGWATER_UNDERWATER", s.getUnderwaterModel() == WaterSettings::UNDERWATER_THESIS ? "1" : "0");
-    // OSGWATER_NO_REFLECTION / OSGWATER_NO_REFRACTION follow what ran (ViewPasses), not the settings
+    // OSGWATER_NO_REFLECTION / OSGWATER_NO_REFRACTION follow what ran (ViewPasses), not the
+    // settings; OSGWATER_ENVIRONMENT the map in use (setEnvironmentMap())
     if (debug == DEBUG_NONE) w->removeDefine("OSGWATER_DEBUG");
     else w->setDefine("OSGWATER_DEBUG", debug == DEBUG_BOTTOM_HIT ? "1" : debug == DEBUG_REFLECTION_LOOKUP ? "2"
                                         : debug == DEBUG_FRESNEL ? "3" : "4");
@@ -146,6 +148,19 @@ void WaterStateSets::releaseGLObjects(osg::State* state) const
     _water->releaseGLObjects(state);
     _guest->releaseGLObjects(state);
     _surfaceBin->releaseGLObjects(state);
+}
+
+void WaterStateSets::setEnvironmentMap(osg::TextureCubeMap* map)
+{
+    osg::StateSet* w = _water.get();
+    if (w->getTextureAttribute(UNIT_ENVIRONMENT, osg::StateAttribute::TEXTURE) == map) return;
+    if (map) {
+        w->setTextureAttribute(UNIT_ENVIRONMENT, map);
+        w->setDefine("OSGWATER_ENVIRONMENT");
+    } else {
+        w->removeTextureAttribute(UNIT_ENVIRONMENT, osg::StateAttribute::TEXTURE);
+        w->removeDefine("OSGWATER_ENVIRONMENT");
+    }
 }
 
 void WaterStateSets::applyLookupPlanes(const osg::Vec2f& heightDepth)

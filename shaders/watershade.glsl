@@ -4,7 +4,9 @@
 // and the near-plane cap (cap.frag), which shades the surface where the near plane cut it away.
 // The includer lists OSGWATER_EYE_BELOW, OSGWATER_ONE_STEP, OSGWATER_REFRACTION_PLANE,
 // OSGWATER_REFLECTION_PLANE, OSGWATER_FRESNEL, OSGWATER_UNDERWATER, OSGWATER_NO_REFLECTION,
-// OSGWATER_NO_REFRACTION, OSGWATER_SEARCH_STEPS, OSGWATER_DEBUG in its import_defines.
+// OSGWATER_NO_REFRACTION, OSGWATER_SEARCH_STEPS, OSGWATER_ENVIRONMENT, OSGWATER_DEBUG in its
+// import_defines. OSGWATER_ENVIRONMENT: the surroundings above the water in a cube map (local
+// frame), read along rays the pass textures do not hold.
 // Debug output (OSGWATER_DEBUG, see osgWater::DebugOutput), alpha says what rgb holds:
 //   2 a point (local frame), 3 a direction (local frame), -1 nothing found, -2 total internal reflection;
 //   1: the refraction estimate W (the point whose colour is fetched), 2: the reflection lookup
@@ -30,11 +32,32 @@ uniform vec2 osgWater_OneStep;              // (dv scale, dv max)
 uniform float osgWater_UnderwaterScale;     // m of eq. 13, 15
 uniform vec2 osgWater_LookupPlanes;         // plane-offset lookups: (height above the level, depth below it)
 
+#ifdef OSGWATER_ENVIRONMENT
+uniform samplerCube osgWater_EnvironmentTex; // unit 6
+#endif
+
 vec3 owSampleProjected(sampler2D tex, mat4 mvp, vec4 P, vec3 fallback)
 {
     vec4 c = mvp * P;
     if (!(c.w > 1e-6)) return fallback;
     return texture(tex, c.xy / c.w * 0.5 + 0.5).rgb;
+}
+
+// The same for a ray along `dir` whose lookup point is P: where P falls outside the texture (or
+// behind its camera), the environment along dir, when there is one (`fromEnvironment` says so).
+vec3 owSampleOrEnvironment(sampler2D tex, mat4 mvp, vec4 P, vec3 dir, vec3 fallback, out bool fromEnvironment)
+{
+    fromEnvironment = false;
+#ifdef OSGWATER_ENVIRONMENT
+    vec4 c = mvp * P;
+    vec2 tc = c.xy / c.w * 0.5 + 0.5; // NaN behind the camera: not inside
+    bool inside = c.w > 1e-6 && all(greaterThanEqual(tc, vec2(0.0))) && all(lessThanEqual(tc, vec2(1.0)));
+    if (!inside) {
+        fromEnvironment = true;
+        return texture(osgWater_EnvironmentTex, dir).rgb;
+    }
+#endif
+    return owSampleProjected(tex, mvp, P, fallback);
 }
 
 // DeepWater's plane-offset lookups: the scene taken as the plane z = planeZ; the ray from U along D
@@ -93,7 +116,8 @@ vec3 owRefractedFromBelow(vec3 U, vec3 R, out vec4 debugHit)
         col = texture(osgWater_RefractionTex, tc).rgb;
         debugHit = vec4((osgWater_RefractionViewInverse * vec4(hit.W, 1.0)).xyz, 2.0);
     } else {
-        col = owSampleProjected(osgWater_RefractionTex, mvp, vec4(R, 0.0), osgWater_WaterColor);
+        bool fromEnvironment;
+        col = owSampleOrEnvironment(osgWater_RefractionTex, mvp, vec4(R, 0.0), R, osgWater_WaterColor, fromEnvironment);
         debugHit = vec4(R, 3.0);
     }
 #endif
@@ -147,11 +171,27 @@ vec3 owShadeWater(vec3 U, vec3 Nup, vec3 E, out vec4 debugOut)
     vec4 reflP = vec4(U + c * Rr, 1.0);
 #endif
     vec4 debugRefl = vec4(reflP.xyz, reflP.w > 0.5 ? 2.0 : 3.0);
+    // the surroundings above the water, for reflections seen from above
+#if defined(OSGWATER_ENVIRONMENT) && !defined(OSGWATER_EYE_BELOW)
+    const bool environment = true;
+#else
+    const bool environment = false;
+#endif
 #ifdef OSGWATER_NO_REFLECTION
     vec3 reflCol = osgWater_WaterColor; // no fetch: the reflection pass did not run
+#ifdef OSGWATER_ENVIRONMENT
+    if (environment) { // every reflected ray reads the environment
+        reflCol = texture(osgWater_EnvironmentTex, Rr).rgb;
+        debugRefl = vec4(Rr, 3.0);
+    } else
+#endif
     F = tir ? 1.0 : 0.0;
 #else
-    vec3 reflCol = owSampleProjected(osgWater_ReflectionTex, osgWater_ReflectionMVP, reflP, osgWater_WaterColor);
+    bool fromEnvironment = false;
+    vec3 reflCol = environment
+        ? owSampleOrEnvironment(osgWater_ReflectionTex, osgWater_ReflectionMVP, reflP, Rr, osgWater_WaterColor, fromEnvironment)
+        : owSampleProjected(osgWater_ReflectionTex, osgWater_ReflectionMVP, reflP, osgWater_WaterColor);
+    if (fromEnvironment) debugRefl = vec4(Rr, 3.0); // the lookup became the ray's direction
 #endif
 
     vec3 refrCol = osgWater_WaterColor;

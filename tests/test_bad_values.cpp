@@ -115,6 +115,7 @@ std::vector<IntSetting> intSettings()
         ISETTING("refractionTextureSize", setRefractionTextureSize, getRefractionTextureSize, 16, 4096),
         ISETTING("causticsResolution", setCausticsResolution, getCausticsResolution, 16, 4096),
         ISETTING("photonGridSize", setPhotonGridSize, getPhotonGridSize, 16, 4096),
+        ISETTING("environmentMapSize", setEnvironmentMapSize, getEnvironmentMapSize, 16, 2048),
         IntSetting{ "resolution", [](WaterSettings&, WaterSurface& w, long long v) { w.setResolution((unsigned int)v); },
                     [](const WaterSettings&, const WaterSurface& w) { return (long long)w.getResolution(); }, 2, 1025 },
     };

@@ -14,6 +14,8 @@ FrameFacts inView()
     f.waterInView = true;
     f.caustics = true;
     f.glowInView = true;
+    f.environment = true;
+    f.environmentStale = true;
     return f;
 }
 
@@ -59,8 +61,8 @@ TEST(PassTable, RenderOrdersAndBinsFollowTheTable)
     }
     // the units the scene and water programs sample at once never collide
     const std::set<int> units = { UNIT_BASE, UNIT_REFLECTION, UNIT_REFRACTION, UNIT_REFRACTION_DEPTH, UNIT_CAUSTICS,
-                                  UNIT_SUN_DEPTH };
-    EXPECT_EQ(units.size(), 6u);
+                                  UNIT_SUN_DEPTH, UNIT_ENVIRONMENT };
+    EXPECT_EQ(units.size(), 7u);
 }
 
 TEST(PassTable, EverythingRunsWithTheWaterInViewAndEveryEffectOn)
@@ -98,7 +100,7 @@ TEST(PassTable, APassNothingReadsDoesNotRun)
     EXPECT_FALSE(r.count(PASS_GLOW_BLUR_V));
     EXPECT_FALSE(r.count(PASS_GLOW_HIGHLIGHT));
     f.caustics = false; // no caustics: neither their three passes
-    EXPECT_EQ(planPasses(f).describe(), "reflection, refraction, surface, scene, near-plane cap");
+    EXPECT_EQ(planPasses(f).describe(), "environment, reflection, refraction, surface, scene, near-plane cap");
 }
 
 TEST(PassTable, SharedCausticsRunOncePerFrameAndTheSunDepthOnlyWhenStale)
@@ -123,4 +125,18 @@ TEST(PassTable, SwitchedOffPassesDoNotRun)
     f.refractionEnabled = false;
     EXPECT_FALSE(planPasses(f).runs(PASS_REFRACTION));
     EXPECT_TRUE(planPasses(f).runs(PASS_SURFACE));
+}
+
+TEST(PassTable, TheEnvironmentMapIsDrawnOnlyWhenStaleAndTheWaterIsSeen)
+{
+    FrameFacts f = inView();
+    EXPECT_TRUE(planPasses(f).runs(PASS_ENVIRONMENT));
+    f.environmentStale = false; // drawn on this context before, nothing changed since
+    EXPECT_FALSE(planPasses(f).runs(PASS_ENVIRONMENT));
+    f = inView();
+    f.waterInView = false; // nothing reads it
+    EXPECT_FALSE(planPasses(f).runs(PASS_ENVIRONMENT));
+    f = inView();
+    f.environment = false; // a map of the user's, or none
+    EXPECT_FALSE(planPasses(f).runs(PASS_ENVIRONMENT));
 }

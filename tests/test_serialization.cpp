@@ -52,6 +52,10 @@ osg::ref_ptr<WaterNode> pond()
     s->setPhotonGridSize(128);
     s->setCausticsFocused(false);
     s->setCausticsGather(WaterSettings::GATHER_CPU);
+    s->setCausticsMethod(WaterSettings::CAUSTICS_AREA_MESH);
+    s->setCausticsSupersampling(true);
+    s->setEnvironmentMapEnabled(true);
+    s->setEnvironmentMapSize(128);
     s->setUnderwaterModel(WaterSettings::UNDERWATER_THESIS);
     s->setGlowEnabled(false);
     s->setGlowRadius(5.0f);
@@ -106,6 +110,10 @@ TEST(Serialization, ExpectedTextReadsBackIntoTheSameNode)
     EXPECT_EQ(s->getPhotonGridSize(), 128);
     EXPECT_FALSE(s->getCausticsFocused());
     EXPECT_EQ(s->getCausticsGather(), WaterSettings::GATHER_CPU);
+    EXPECT_EQ(s->getCausticsMethod(), WaterSettings::CAUSTICS_AREA_MESH);
+    EXPECT_TRUE(s->getCausticsSupersampling());
+    EXPECT_TRUE(s->getEnvironmentMapEnabled());
+    EXPECT_EQ(s->getEnvironmentMapSize(), 128);
     EXPECT_EQ(s->getCausticsResolution(), 256); // absent: default
     EXPECT_EQ(s->getUnderwaterModel(), WaterSettings::UNDERWATER_THESIS);
     EXPECT_FALSE(s->getGlowEnabled());

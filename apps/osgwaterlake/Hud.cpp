@@ -19,7 +19,7 @@ std::string describeSettings(const WaterSettings& s)
     if (s.getWaterModel() == WaterSettings::WATER_PER_CHANNEL) o << "per-channel";
     else o << "k " << s.getAttenuation();
     o << ", tex " << s.getReflectionTextureSize()
-      << ", glow " << (s.getGlowEnabled() ? "on" : "off")
+      << ", glow " << (s.getGlowEnabled() ? "on" : "off") << (s.getEnvironmentMapEnabled() ? ", environment" : "")
       << ", underwater " << WaterSettings::underwaterModelName(s.getUnderwaterModel());
     return o.str();
 }
@@ -62,7 +62,7 @@ public:
                       c ? c->getMilliseconds() : -1.0);
         _text->setText(std::string(line) + describeSettings(*_water->getSettings()) + ", caustics " +
                        describeCaustics(*_water) +
-                       "\nkeys: r reflection  f refraction  t technique  e reflection lookup  +/- steps  m fresnel  o rotation  k caustics  g gather  a mesh  x 2x2  u under water  n model  l glow  s stats  arrows move");
+                       "\nkeys: r reflection  f refraction  t technique  e reflection lookup  +/- steps  m fresnel  o rotation  k caustics  g gather  a mesh  x 2x2  v environment  u under water  n model  l glow  s stats  arrows move");
         traverse(node, nv);
     }
 

@@ -61,6 +61,7 @@ void LakeOptions::describe(osg::ApplicationUsage& u)
     u.addCommandLineOption("--water-color <r> <g> <b>", "Water colour (thesis model)");
     u.addCommandLineOption("--fov-ext <near> <far> <falloff>", "Pass FOV extension near/far the water, e-folding height");
     u.addCommandLineOption("--texture-size <n>", "Reflection and refraction texture size");
+    u.addCommandLineOption("--environment", "Reflect the surroundings from an environment cube map where the reflection texture ends");
     u.addCommandLineOption("--no-reflection", "Switch reflection off");
     u.addCommandLineOption("--no-refraction", "Switch refraction off");
     u.addCommandLineOption("--no-rotation", "Do not rotate the refraction camera (thesis 5.1)");
@@ -133,6 +134,7 @@ bool LakeOptions::read(osg::ArgumentParser& args)
     if (args.read("--water-color", f, g, h)) _setters.push_back([f, g, h](WaterSettings& w) { w.setWaterColor(osg::Vec3(f, g, h)); });
     if (args.read("--fov-ext", f, g, h)) _setters.push_back([f, g, h](WaterSettings& w) { w.setFovExtension(f, g, h); });
     if (args.read("--texture-size", n)) _setters.push_back([n](WaterSettings& w) { w.setReflectionTextureSize(n); w.setRefractionTextureSize(n); });
+    if (args.read("--environment")) _setters.push_back([](WaterSettings& w) { w.setEnvironmentMapEnabled(true); });
     if (args.read("--no-reflection")) _setters.push_back([](WaterSettings& w) { w.setReflectionEnabled(false); });
     if (args.read("--no-refraction")) _setters.push_back([](WaterSettings& w) { w.setRefractionEnabled(false); });
     if (args.read("--no-rotation")) _setters.push_back([](WaterSettings& w) { w.setRefractionCameraRotation(false); });

@@ -54,7 +54,7 @@ std::string checkSettings(const osgWater::WaterSettings& s)
         outside(s.getCausticsMethod(), W::CAUSTICS_AREA_MESH) || outside(s.getUnderwaterModel(), W::UNDERWATER_THESIS))
         return "an enum setting holds a value it does not define";
     if (s.getSearchSteps() < 1 || s.getReflectionTextureSize() < 1 || s.getRefractionTextureSize() < 1 ||
-        s.getCausticsResolution() < 1 || s.getPhotonGridSize() < 1)
+        s.getCausticsResolution() < 1 || s.getPhotonGridSize() < 1 || s.getEnvironmentMapSize() < 1)
         return "a count or size is not positive";
     return "";
 }
