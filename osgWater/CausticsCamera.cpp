@@ -1,6 +1,7 @@
 #include <osgWater/CausticsCamera>
 #include <osgWater/PassMath>
 #include <osgWater/WaterSettings>
+#include <osg/FrontFace>
 #include <osg/GLExtensions>
 #include <osgUtil/CullVisitor>
 #include <algorithm>
@@ -46,10 +47,13 @@ const char* CausticsCamera::gatherName(WaterSettings::CausticsGather g)
 }
 
 CausticsCamera::CausticsCamera(osg::Group* scene, osg::StateSet* sceneState, osg::StateSet* waterState,
-                               int resolution, int gridSize, bool floatTargets)
-    : PassCamera(scene, { sceneState, depthOnlyState() }, gridSize, gridSize, PASS_SUN_DEPTH), _floatTargets(floatTargets)
+                               int resolution, int gridSize, bool floatTargets, bool reflected)
+    : PassCamera(scene, { sceneState, depthOnlyState() }, gridSize, gridSize, PASS_SUN_DEPTH), _floatTargets(floatTargets),
+      _reflected(reflected)
 {
-    setName("osgWater.CausticsCamera");
+    setName(reflected ? "osgWater.ReflectedCausticsCamera" : "osgWater.CausticsCamera");
+    // the mirror flips winding: keep front faces front
+    if (reflected) getOrCreateStateSet()->setAttribute(new osg::FrontFace(osg::FrontFace::CLOCKWISE));
     // depth only: no colour target, no shading
     setClearMask(GL_DEPTH_BUFFER_BIT);
     setDrawBuffer(GL_NONE);
@@ -94,6 +98,19 @@ bool CausticsCamera::matches(int resolution, int gridSize, bool floatTargets) co
     return getResolution() == resolution && getGridSize() == gridSize && _floatTargets == floatTargets;
 }
 
+bool CausticsCamera::reflectedNeeded(const Frame& f)
+{
+    return f.settings && f.settings->getCausticsEnabled() && f.settings->getReflectiveCaustics() && f.surface &&
+           f.water.valid() && f.scene.valid() && f.towardsSun.z() > 0.0f && f.scene.zMax() > f.level;
+}
+
+osg::BoundingBox CausticsCamera::reflectedBox(const Frame& f)
+{
+    osg::BoundingBox box = lightBox(f, false);
+    box.zMin() = std::min(float(2.0 * f.level) - f.scene.zMax(), float(f.level) - 0.01f);
+    return box;
+}
+
 bool CausticsCamera::needed(const Frame& f)
 {
     return f.settings && f.settings->getCausticsEnabled() && f.surface && f.water.valid() && f.scene.valid()
@@ -128,11 +145,16 @@ void CausticsCamera::update(const Frame& f)
     _depthDrawn = false; // a new frame
     // what the sun sees of the water volume: where its light can land (or the water's extent cut
     // to the scene's), from the deepest point there up to just above the crests
-    const osg::BoundingBox box = lightBox(f, f.settings->getCausticsFocused());
+    // (reflected: the scene above the water mirrored in the water plane, seen the same way)
+    const osg::BoundingBox box = _reflected ? reflectedBox(f) : lightBox(f, f.settings->getCausticsFocused());
 
-    const osg::Matrixd view = sunView(f.towardsSun, box);
-    const osg::Matrixd proj = sunProjection(view, box);
-    setKeepPlane(osg::Plane(0.0, 0.0, -1.0, f.level + f.clearance)); // the underwater part only
+    const osg::Matrixd sun = sunView(f.towardsSun, box);
+    const osg::Matrixd proj = sunProjection(sun, box);
+    const osg::Matrixd mirror = mirrorMatrix(f.level);
+    // the depth map's view: the mirrored scene's, in the sun's eye space
+    const osg::Matrixd view = _reflected ? mirror * sun : sun;
+    // the underwater part only, or what stands above the water
+    setKeepPlane(_reflected ? osg::Plane(0.0, 0.0, 1.0, -f.level) : osg::Plane(0.0, 0.0, -1.0, f.level + f.clearance));
     if (view != _depthView || proj != _depthProj) {
         _depthView = view;
         _depthProj = proj;
@@ -144,15 +166,16 @@ void CausticsCamera::update(const Frame& f)
     depthPass.towardsSun = f.towardsSun;
     depthPass.level = f.level;
     applyLighting(depthPass);
-    _photons->setSun(f.surface, view, proj, _depth.get());
+    _photons->setSun(f.surface, sun, proj, _depth.get(), _reflected ? &mirror : nullptr);
 
     double l, r, b, t, n, fa;
     proj.getOrtho(l, r, b, t, n, fa);
     _window.set(r - l, t - b, fa - n);
     const double texel = std::max(r - l, t - b) / getGridSize();
-    _lighting.localToSun = view * proj * clipToTexture();
+    _lighting.localToSun = view * proj * clipToTexture(); // reflected: a fragment mirrored first
     _lighting.intensity = f.settings->getCausticsIntensity() * _gather->getValueScale();
-    _lighting.channelExtinction = channelExtinction(*f.settings);
+    // the photons' green-channel fade is the others' too in the air
+    _lighting.channelExtinction = _reflected ? osg::Vec3f() : channelExtinction(*f.settings);
     _lighting.depthBias.set(float(1.5 * texel / _window.z()), float(texel / _window.z()));
 
     const osg::Texture::FilterMode filter = f.settings->getCausticsFiltering() ? osg::Texture::LINEAR

@@ -66,7 +66,8 @@ PassPlan osgWater::planPasses(const FrameFacts& f)
         if (!(row.writes & needed) || !row.wanted(f)) continue;
         plan._runs |= 1u << row.id;
         needed |= row.reads;
-        if (row.litScene && seesUnderWater && f.caustics) needed |= RES_CAUSTICS | RES_SUN_DEPTH;
+        // a scene pass reads the caustics where it sees below the water, or, reflective, above it
+        if (row.litScene && f.caustics && (seesUnderWater || f.reflectedCaustics)) needed |= RES_CAUSTICS | RES_SUN_DEPTH;
     }
     return plan;
 }

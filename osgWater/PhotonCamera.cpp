@@ -2,6 +2,7 @@
 #include <osgWater/Shaders>
 #include <osgWater/PassCamera>
 #include <osgWater/DrawNodes>
+#include <osgWater/SceneLighting>
 
 using namespace osgWater;
 
@@ -35,8 +36,15 @@ PhotonCamera::PhotonCamera(osg::StateSet* waterState, int gridSize, bool floatTa
 }
 
 void PhotonCamera::setSun(osg::Node* surface, const osg::Matrixd& view, const osg::Matrixd& projection,
-                          osg::Texture2D* sunDepth)
+                          osg::Texture2D* sunDepth, const osg::Matrixd* mirror)
 {
+    setDefineIf(_photonState.get(), "OSGWATER_REFLECTED_PHOTONS", mirror != nullptr);
+    if (mirror) {
+        // the mirror in the sun's eye space: back to the water's frame, mirrored, forth again
+        const osg::Matrixf mirrorEye(osg::Matrixd::inverse(view) * *mirror * view);
+        if (osg::Uniform* u = _photonState->getUniform("osgWater_MirrorEye")) u->set(mirrorEye);
+        else _photonState->addUniform(new osg::Uniform("osgWater_MirrorEye", mirrorEye));
+    }
     _surface = surface;
     _draw->setNode(0, surface);
     setViewMatrix(view);

@@ -52,6 +52,23 @@ void osgWater::applySceneLighting(osg::StateSet* ss, const SceneLighting& l, con
         ss->removeTextureAttribute(UNIT_CAUSTICS, osg::StateAttribute::TEXTURE);
         ss->removeTextureAttribute(UNIT_SUN_DEPTH, osg::StateAttribute::TEXTURE);
     }
+
+    // the reflected sun: from the sun's mirror image under the water
+    const CausticsLighting* r = l.reflectedCaustics;
+    setDefineIf(ss, "OSGWATER_REFLECTED_CAUSTICS", r != nullptr);
+    osg::Vec3f mirroredSun = osg::Matrixd::transform3x3(osg::Vec3d(l.towardsSun.x(), l.towardsSun.y(), -l.towardsSun.z()), view);
+    mirroredSun.normalize();
+    setUniform(ss, "osgWater_ReflectedSunEye", mirroredSun);
+    setUniform(ss, "osgWater_ReflectedIntensity", r ? r->intensity : 0.0f);
+    setUniform(ss, "osgWater_EyeToReflectedSun", r ? osg::Matrixf(osg::Matrixd::inverse(view) * r->localToSun) : osg::Matrixf());
+    setUniform(ss, "osgWater_ReflectedDepthBias", r ? r->depthBias : osg::Vec2f(0.0f, 0.0f));
+    if (r) {
+        ss->setTextureAttribute(UNIT_REFLECTED_CAUSTICS, r->caustics.get());
+        ss->setTextureAttribute(UNIT_REFLECTED_SUN_DEPTH, r->depth.get());
+    } else {
+        ss->removeTextureAttribute(UNIT_REFLECTED_CAUSTICS, osg::StateAttribute::TEXTURE);
+        ss->removeTextureAttribute(UNIT_REFLECTED_SUN_DEPTH, osg::StateAttribute::TEXTURE);
+    }
 }
 
 float osgWater::photonExtinction(const WaterSettings& s) { return s.getSunExtinction().y(); }

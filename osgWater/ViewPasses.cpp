@@ -70,6 +70,7 @@ void ViewPasses::update(const PassContext& ctx, const PassPlan& plan, const Scen
         // with d = |A2 - C2| in this pass): the view's fog comes along
         SceneLighting l = lighting;
         if (!ctx.eyeBelow) l.caustics = nullptr;
+        else l.reflectedCaustics = nullptr; // the mirror under water shows the underwater scene
         _reflection->update(ctx);
         _reflection->applyLighting(l);
     }
@@ -79,6 +80,7 @@ void ViewPasses::update(const PassContext& ctx, const PassPlan& plan, const Scen
         SceneLighting l = lighting;
         l.fogExtinction = osg::Vec3();
         if (ctx.eyeBelow) l.caustics = nullptr;
+        else l.reflectedCaustics = nullptr; // from above it sees the underwater scene
         _refraction->update(ctx);
         _refraction->applyLighting(l);
     }

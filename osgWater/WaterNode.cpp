@@ -65,6 +65,7 @@ void WaterNode::setPassTimingEnabled(bool on)
     _underwater->setTimingEnabled(on);
     OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_causticsMutex);
     if (_caustics.valid()) _caustics->setTimingEnabled(on);
+    if (_reflectedCaustics.valid()) _reflectedCaustics->setTimingEnabled(on);
 }
 
 double WaterNode::getPassMilliseconds(osg::Camera* camera, PassId pass) const
@@ -161,6 +162,7 @@ void WaterNode::resizeGLObjectBuffers(unsigned int maxSize)
     }
     OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_causticsMutex);
     if (_caustics.valid()) _caustics->resizeGLObjectBuffers(maxSize);
+    if (_reflectedCaustics.valid()) _reflectedCaustics->resizeGLObjectBuffers(maxSize);
 }
 
 void WaterNode::releaseGLObjects(osg::State* state) const
@@ -177,6 +179,7 @@ void WaterNode::releaseGLObjects(osg::State* state) const
     }
     OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_causticsMutex);
     if (_caustics.valid()) _caustics->releaseGLObjects(state);
+    if (_reflectedCaustics.valid()) _reflectedCaustics->releaseGLObjects(state);
     // released caustics hold nothing any more: the next frame renders them again
     if (state) _causticsRendered.erase(state->getContextID());
     else _causticsRendered.clear();
@@ -391,7 +394,10 @@ SceneLighting WaterNode::sceneLighting(const ViewFrame& v, const PassPlan& plan)
         l.fogExtinction = s.getViewExtinction();
     }
     // the caustics, when this frame has them on this context (rendered now or by another view)
-    if (v.facts.caustics && (plan.runs(PASS_GATHER) || v.facts.causticsDone)) l.caustics = &_caustics->getLighting();
+    if (v.facts.caustics && (plan.runs(PASS_GATHER) || v.facts.causticsDone)) {
+        l.caustics = &_caustics->getLighting();
+        if (v.facts.reflectedCaustics) l.reflectedCaustics = &_reflectedCaustics->getLighting();
+    }
     return l;
 }
 
@@ -408,6 +414,7 @@ void WaterNode::cullPass(PassId pass, osgUtil::CullVisitor& cv, const ViewFrame&
     case PASS_PHOTONS:
     case PASS_GATHER:
         _caustics->getPassCamera(pass)->accept(cv);
+        if (v.facts.reflectedCaustics) _reflectedCaustics->getPassCamera(pass)->accept(cv);
         break;
     case PASS_REFLECTION: p->getReflectionCamera()->accept(cv); break;
     case PASS_REFRACTION: p->getRefractionCamera()->accept(cv); break;
@@ -560,6 +567,7 @@ void WaterNode::prepareCaustics(ViewFrame& v)
         f.surface = _surface.get();
         f.settings = &s;
         _causticsNeeded = CausticsCamera::needed(f);
+        _reflectedNeeded = false;
         if (_causticsNeeded) {
             // the focused window keeps the texel spacing the settings give the whole one, and the
             // photons per texel exactly (a ratio off by a rounding makes a moire of 3s and 4s)
@@ -574,8 +582,21 @@ void WaterNode::prepareCaustics(ViewFrame& v)
                 _caustics->setTimingEnabled(_passTiming);
             }
             _caustics->update(f);
-            const CausticsAim key{ _caustics.get(), _settings.get(), _surface.get(), _settings->getRevision(),
-                                   _surface->getRevision(), _caustics->getDepthVersion() };
+            // the reflective caustics: over the whole window (the lit water is where refracted light lands)
+            _reflectedNeeded = CausticsCamera::reflectedNeeded(f);
+            if (!_reflectedNeeded) {
+                _reflectedCaustics = nullptr;
+            } else {
+                if (!_reflectedCaustics.valid() || !_reflectedCaustics->matches(setResolution, setGrid, v.support.floatTargets)) {
+                    _reflectedCaustics = new CausticsCamera(this, _states.getSceneStateSet(), _states.getWaterStateSet(),
+                                                            setResolution, setGrid, v.support.floatTargets, true);
+                    _reflectedCaustics->setTimingEnabled(_passTiming);
+                }
+                _reflectedCaustics->update(f);
+            }
+            const CausticsAim key{ _caustics.get(), _reflectedCaustics.get(), _settings.get(), _surface.get(),
+                                   _settings->getRevision(), _surface->getRevision(), _caustics->getDepthVersion(),
+                                   _reflectedNeeded ? _reflectedCaustics->getDepthVersion() : 0u };
             if (key != _causticsAimKey) {
                 _causticsAimKey = key;
                 ++_causticsAim;
@@ -589,6 +610,8 @@ void WaterNode::prepareCaustics(ViewFrame& v)
                            (done->second.frame == v.frameNumber ||
                             (_skipping && causticsStillHold(done->second.aim, done->second.time, v.time)));
     v.facts.sunDepthStale = _caustics->depthStale(v.contextID);
+    v.facts.reflectedCaustics = _reflectedNeeded && _reflectedCaustics.valid();
+    if (v.facts.reflectedCaustics) v.facts.sunDepthStale = v.facts.sunDepthStale || _reflectedCaustics->depthStale(v.contextID);
 }
 
 bool WaterNode::causticsStillHold(unsigned int aim, double renderedAt, double t) const
@@ -623,10 +646,15 @@ bool WaterNode::claimCaustics(const ViewFrame& v, const PassPlan& plan)
     last.frame = v.frameNumber;
     last.aim = _causticsAim;
     last.time = v.time;
-    if (plan.runs(PASS_SUN_DEPTH)) _caustics->markDepthDrawn(v.contextID);
+    const bool reflected = v.facts.reflectedCaustics && _reflectedCaustics.valid();
+    if (plan.runs(PASS_SUN_DEPTH)) {
+        _caustics->markDepthDrawn(v.contextID);
+        if (reflected) _reflectedCaustics->markDepthDrawn(v.contextID);
+    }
     if (_gatherResolved != v.frameNumber) { // the gather follows frames that render caustics
         _gatherResolved = v.frameNumber;
         _caustics->resolveGather(*_settings, v.support);
+        if (reflected) _reflectedCaustics->resolveGather(*_settings, v.support);
     }
     return true;
 }

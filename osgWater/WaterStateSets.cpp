@@ -47,6 +47,8 @@ WaterStateSets::WaterStateSets()
     // the sun, fog, caustics and clip plane come from each pass's SceneLighting
     _scene->addUniform(new osg::Uniform("osgWater_CausticsTex", int(UNIT_CAUSTICS)));
     _scene->addUniform(new osg::Uniform("osgWater_SunDepth", int(UNIT_SUN_DEPTH)));
+    _scene->addUniform(new osg::Uniform("osgWater_ReflectedCausticsTex", int(UNIT_REFLECTED_CAUSTICS)));
+    _scene->addUniform(new osg::Uniform("osgWater_ReflectedSunDepth", int(UNIT_REFLECTED_SUN_DEPTH)));
     // the sun's colour and the ambient follow the settings, changed in the update traversal
     _scene->setDataVariance(osg::Object::DYNAMIC);
 

@@ -1,7 +1,11 @@
 // Caustics applied like a shadow map (thesis §9.2): the fragment's position in the sun camera's
 // texture space indexes the caustics texture (power per unit area seen from the sun, in units of
 // the sun's irradiance) and the sun's depth map (shadows). Included only by passes that have
-// caustics (OSGWATER_CAUSTICS).
+// caustics (OSGWATER_CAUSTICS) or reflective caustics (OSGWATER_REFLECTED_CAUSTICS: the same for
+// the sun reflected off the water, with the fragment mirrored in the water plane).
+in float vAboveWater;
+
+#ifdef OSGWATER_CAUSTICS
 uniform float osgWater_CausticsIntensity;
 uniform sampler2D osgWater_CausticsTex;  // unit 4
 uniform sampler2D osgWater_SunDepth;     // unit 5
@@ -9,7 +13,6 @@ uniform vec2 osgWater_SunDepthBias;      // depth bias: constant + per unit of s
 uniform vec3 osgWater_CausticsChannels;  // per-channel sun extinction beyond the photons', per metre of depth
 
 in vec3 vSun;
-in float vAboveWater;
 
 // Share of the direct sun reaching a fragment per channel (1 above the water or without caustics).
 // Irradiance on a surface of normal n is C (n.L): C counts power per area seen from the sun. The
@@ -29,3 +32,26 @@ vec3 owUnderwaterSun(float ndl)
     return vec3(osgWater_CausticsIntensity * texture(osgWater_CausticsTex, vSun.xy).r);
 #endif
 }
+#endif
+
+#ifdef OSGWATER_REFLECTED_CAUSTICS
+uniform float osgWater_ReflectedIntensity;
+uniform sampler2D osgWater_ReflectedCausticsTex; // unit 7
+uniform sampler2D osgWater_ReflectedSunDepth;    // unit 8: the scene above the water, mirrored
+uniform vec2 osgWater_ReflectedDepthBias;
+in vec3 vSunR;
+in vec2 vNdlR; // n.l of the front and back faces for the sun's mirror image
+
+// The sun reflected off the water on a fragment above it, in units of the sun's irradiance per
+// n.l towards the sun's mirror image: 0 under the water, off the map, or where the mirrored depth
+// map shows the reflected light stopped before it reaches the fragment.
+float owReflectedSun(float ndl)
+{
+    if (vAboveWater < 0.0) return 0.0;
+    if (any(lessThan(vSunR.xy, vec2(0.0))) || any(greaterThan(vSunR.xy, vec2(1.0)))) return 0.0;
+    float tanSlope = sqrt(max(1.0 - ndl * ndl, 0.0)) / max(ndl, 0.1);
+    float bias = osgWater_ReflectedDepthBias.x + osgWater_ReflectedDepthBias.y * tanSlope;
+    if (vSunR.z > texture(osgWater_ReflectedSunDepth, vSunR.xy).r + bias) return 0.0;
+    return osgWater_ReflectedIntensity * texture(osgWater_ReflectedCausticsTex, vSunR.xy).r;
+}
+#endif

@@ -1,10 +1,13 @@
 #version 130
-#pragma import_defines(OSGWATER_GRID, OSGWATER_FRESNEL, OSGWATER_SEARCH_STEPS)
+#pragma import_defines(OSGWATER_GRID, OSGWATER_FRESNEL, OSGWATER_SEARCH_STEPS, OSGWATER_REFLECTED_PHOTONS)
 // Caustics pass 2: one photon per fragment. The sun ray through this texel is refracted at the
 // surface, its hit on the bed is found by the same depth-texture search as the refraction
 // (here in the sun's depth map, orthographic rays), and the photon is written as
 // (u, v, energy, 1): u, v its hit in the sun's texture space, energy = (1 - F) exp(-k d) (k: green) the
 // Fresnel-transmitted, attenuated share of the sun irradiance on this texel (thesis §9.2).
+// OSGWATER_REFLECTED_PHOTONS (reflective caustics): the sun ray reflected instead, mirrored in the
+// water plane so it runs down through the mirrored scene above the water (the depth map's), with
+// the reflected share F and no water on its way.
 #define OSGWATER_ORTHO_DEPTH 1
 #pragma include "waves.glsl"
 #pragma include "optics.glsl"
@@ -14,6 +17,9 @@ uniform float osgWater_PhotonExtinction; // the green channel's sun extinction (
 uniform float osgWater_FresnelQ;
 uniform int osgWater_SearchSteps;
 uniform float osgWater_SearchTolerance;
+#ifdef OSGWATER_REFLECTED_PHOTONS
+uniform mat4 osgWater_MirrorEye; // the mirror in the water plane, in this camera's eye space
+#endif
 
 in vec3 vLocal;
 in vec3 vMeshNormal;
@@ -29,14 +35,24 @@ void main()
     const vec3 L = vec3(0.0, 0.0, 1.0);  // towards the sun, in the sun camera's eye space
     vec3 N = owFaceNormal(owSafeNormalize(gl_NormalMatrix * Nl, L), L, 1e-3);
     float cosL = clamp(dot(N, L), 0.0, 1.0);
+#ifdef OSGWATER_REFLECTED_PHOTONS
+    vec3 start = (osgWater_MirrorEye * vec4(vEye, 1.0)).xyz;
+    vec3 T = mat3(osgWater_MirrorEye) * reflect(-L, N);
+#else
+    vec3 start = vEye;
     vec3 T = refract(-L, N, osgWater_IOR.x / osgWater_IOR.y);
+#endif
     vec4 photon = vec4(0.0);              // alpha 0: no photon
-    owBottomHit hit = owIterativeSearch(vEye, T, osgWater_SearchSteps, osgWater_SearchTolerance);
+    owBottomHit hit = owIterativeSearch(start, T, osgWater_SearchSteps, osgWater_SearchTolerance);
     vec2 tc;
     if (dot(T, T) > 0.5 && hit.valid && owRefractionTexCoord(hit.W, tc)) {
         float F = owFresnel(cosL, osgWater_IOR.x, osgWater_IOR.y, osgWater_FresnelQ);
+#ifdef OSGWATER_REFLECTED_PHOTONS
+        photon = vec4(tc, F, 1.0);
+#else
         float d = length(hit.A - vEye);
         photon = vec4(tc, (1.0 - F) * exp(-osgWater_PhotonExtinction * d), 1.0);
+#endif
     }
     gl_FragColor = photon;
 }

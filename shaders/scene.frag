@@ -1,10 +1,12 @@
 #version 130
-#pragma import_defines(OSGWATER_FOG, OSGWATER_CAUSTICS, OSGWATER_CAUSTICS_CHANNELS)
+#pragma import_defines(OSGWATER_FOG, OSGWATER_CAUSTICS, OSGWATER_CAUSTICS_CHANNELS, OSGWATER_REFLECTED_CAUSTICS)
 // Fixed-function look of the OBJ loader's geometry: material * texture, one sun + ambient, lit per
 // vertex (scene.vert). Variants by pass, never branches (a software rasteriser runs both sides):
 // - OSGWATER_CAUSTICS, where the pass can see below the water and caustics are on: under water the
 //   direct sun is the caustic irradiance of the photon pass (thesis ch. 8), and zero where the
 //   sun's depth map shows something between the fragment and the surface (underwater shadows);
+// - OSGWATER_REFLECTED_CAUSTICS, where the pass sees above the water and reflective caustics are
+//   on: above the water the sun reflected off it adds its irradiance from the sun's mirror image;
 // - OSGWATER_FOG, where the pass's eye is under water: everything is seen through water, its
 //   colour blended towards the water colour by the distance from this pass's eye (eq. 10).
 uniform sampler2D osgWater_BaseTexture; // unit 0; a white texel when the geometry has none
@@ -14,7 +16,7 @@ in vec4 vUnlit;
 in vec3 vSunLit;
 in vec2 vNdl;
 
-#ifdef OSGWATER_CAUSTICS
+#if defined(OSGWATER_CAUSTICS) || defined(OSGWATER_REFLECTED_CAUSTICS)
 #pragma include "caustics.glsl"
 #endif
 #ifdef OSGWATER_FOG
@@ -32,6 +34,10 @@ void main()
     vec3 c = vUnlit.rgb + vSunLit * (ndl * owUnderwaterSun(ndl));
 #else
     vec3 c = vUnlit.rgb + vSunLit * ndl;
+#endif
+#ifdef OSGWATER_REFLECTED_CAUSTICS
+    float ndlR = gl_FrontFacing ? vNdlR.x : vNdlR.y;
+    c += vSunLit * (ndlR * owReflectedSun(ndlR));
 #endif
     c *= tex.rgb;
 #ifdef OSGWATER_FOG

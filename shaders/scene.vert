@@ -1,5 +1,5 @@
 #version 130
-#pragma import_defines(OSGWATER_FOG, OSGWATER_CAUSTICS)
+#pragma import_defines(OSGWATER_FOG, OSGWATER_CAUSTICS, OSGWATER_REFLECTED_CAUSTICS)
 // The kit's program for the water's scene (the WaterNode's children): textured, lit by one sun,
 // and clipped by the pass plane so the reflection and refraction passes split the scene.
 // Lit per vertex like the fixed-function pipeline the OBJ loader's materials are made for: with
@@ -14,11 +14,19 @@ out vec2 vTexCoord;
 out vec4 vUnlit;    // emission + ambient; alpha: the material's
 out vec3 vSunLit;   // diffuse * sun colour: the direct sun's share before n.l
 out vec2 vNdl;      // n.l of the front face and of the back face
-#ifdef OSGWATER_CAUSTICS
+#if defined(OSGWATER_CAUSTICS) || defined(OSGWATER_REFLECTED_CAUSTICS)
 uniform vec4 osgWater_WaterPlane; // the mean water plane in eye space, > 0 above the water
+out float vAboveWater;
+#endif
+#ifdef OSGWATER_CAUSTICS
 uniform mat4 osgWater_EyeToSun;   // eye space -> the sun camera's texture space (caustics, shadows)
 out vec3 vSun;
-out float vAboveWater;
+#endif
+#ifdef OSGWATER_REFLECTED_CAUSTICS
+uniform mat4 osgWater_EyeToReflectedSun; // eye space -> mirrored in the water plane -> the reflected sun's texture space
+uniform vec3 osgWater_ReflectedSunEye;   // towards the sun's mirror image under the water, eye space
+out vec3 vSunR;
+out vec2 vNdlR;   // n.l of the front and back faces for the reflected sun
 #endif
 #ifdef OSGWATER_FOG
 out vec3 vEyePos;
@@ -35,9 +43,16 @@ void main()
                   gl_FrontMaterial.diffuse.a);
     vSunLit = gl_FrontMaterial.diffuse.rgb * osgWater_SunColor;
     vTexCoord = (gl_TextureMatrix[0] * gl_MultiTexCoord0).st;
+#if defined(OSGWATER_CAUSTICS) || defined(OSGWATER_REFLECTED_CAUSTICS)
+    vAboveWater = dot(osgWater_WaterPlane, eye);
+#endif
 #ifdef OSGWATER_CAUSTICS
     vSun = (osgWater_EyeToSun * eye).xyz; // orthographic: w stays 1
-    vAboveWater = dot(osgWater_WaterPlane, eye);
+#endif
+#ifdef OSGWATER_REFLECTED_CAUSTICS
+    float ndlR = l2 > 1e-20 ? dot(n, osgWater_ReflectedSunEye) * inversesqrt(l2) : 0.0;
+    vNdlR = vec2(max(ndlR, 0.0), max(-ndlR, 0.0));
+    vSunR = (osgWater_EyeToReflectedSun * eye).xyz;
 #endif
 #ifdef OSGWATER_FOG
     vEyePos = eye.xyz / eye.w;

@@ -140,3 +140,12 @@ TEST(PassTable, TheEnvironmentMapIsDrawnOnlyWhenStaleAndTheWaterIsSeen)
     f.environment = false; // a map of the user's, or none
     EXPECT_FALSE(planPasses(f).runs(PASS_ENVIRONMENT));
 }
+
+TEST(PassTable, ReflectiveCausticsAreRenderedForAViewThatSeesOnlyTheSceneAboveTheWater)
+{
+    FrameFacts f;
+    f.caustics = true; // the water out of view, the eye above it: the scene alone
+    EXPECT_EQ(planPasses(f).describe(), "scene");
+    f.reflectedCaustics = true; // the sun reflected off the water lights that scene
+    EXPECT_EQ(planPasses(f).describe(), "sun depth, photons, gather, scene");
+}

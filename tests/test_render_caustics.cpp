@@ -420,9 +420,17 @@ TEST_P(RenderCausticsMethod, NoNaNOrInfAtAnySunElevation)
         REQUIRE_GL(sc.h);
         sc.water->getSettings()->setCausticsMethod(GetParam());
         sc.water->getSettings()->setRefractionEnabled(true);
+        sc.water->getSettings()->setReflectiveCaustics(true); // with a post standing in the water
+        sc.water->addChild(litQuad(-1, -1, 1, 1, 2.0f));
         sc.water->getSurface()->setWaves({ Wave() });
         sc.h.frame(1e7);
         CausticsCamera* c = sc.water->getCausticsCamera();
+        if (CausticsCamera* r = sc.water->getReflectedCausticsCamera()) {
+            EXPECT_TRUE(allFinite(sc.h.readTexture(r->getCausticsTexture()).get())) << elevation;
+            EXPECT_TRUE(allFinite(sc.h.readTexture(r->getPhotonTexture()).get())) << elevation;
+        } else {
+            EXPECT_LE(elevation, 0.0) << "no reflective caustics with the sun at " << elevation << " deg";
+        }
         if (elevation <= 0.0) {
             EXPECT_EQ(c, nullptr) << "caustics rendered with the sun at " << elevation << " deg";
         } else {
@@ -455,6 +463,48 @@ TEST(RenderCaustics, TheBedIsLitByTheCausticsAndShadowedByUnderwaterObjects)
     s->setCausticsEnabled(false);
     EXPECT_NEAR(bedColour(osg::Vec3d(-3, 0, -2)), ndl, 0.01);
     EXPECT_NEAR(bedColour(osg::Vec3d(1.8, 0, -2)), ndl, 0.01);
+}
+
+TEST(RenderCaustics, TheSunReflectedOffFlatWaterLightsAWallAboveItByTheReflectedShareF)
+{
+    // the sun 20 degrees above the horizon towards +x; a white wall at x = -3 facing +x, standing
+    // on the water: the direct sun gives it n.L = cos 20 deg, the sun's mirror image under flat
+    // water as much again times the reflected share F at the sun's incidence (Schlick, q 5)
+    const double e = osg::DegreesToRadians(20.0);
+    const osg::Vec3 sun(float(std::cos(e)), 0.0f, float(std::sin(e)));
+    CausticsScene sc(20.0f, 64, 128, sun, -2.0f);
+    REQUIRE_GL(sc.h);
+    osg::Geode* wall = litQuad(0, 0, 0, 0, 0); // a white diffuse material on a wall of its own
+    wall->removeDrawables(0, wall->getNumDrawables());
+    wall->addDrawable(emissiveQuad(osg::Vec3(-3, -3, 0.2f), osg::Vec3(-3, 3, 0.2f), osg::Vec3(-3, 3, 3),
+                                   osg::Vec3(-3, -3, 3), osg::Vec4(1, 1, 1, 1))->getDrawable(0));
+    sc.water->addChild(wall);
+    WaterSettings* s = sc.water->getSettings();
+    s->setAmbientColor(osg::Vec3(0, 0, 0));
+    s->setSunColor(osg::Vec3(1, 1, 1));
+    s->setGlowEnabled(false);
+    s->setReflectiveCaustics(true);
+    sc.h.lookAt(osg::Vec3d(5, 0, 1.6), osg::Vec3d(-3, 0, 1.6));
+    auto wallColour = [&]() {
+        sc.h.frame(1.0);
+        osg::ref_ptr<osg::Image> img = sc.h.readColor();
+        return double(pixel(img.get(), img->s() / 2, img->t() / 2)[0]);
+    };
+    const double F = optics::fresnelSchlick(float(std::sin(e)), optics::normalReflectance(1.0f, 1.333f), 5.0f);
+    EXPECT_NEAR(wallColour(), std::cos(e) * (1.0 + F), 0.01) << "F " << F;
+    CausticsCamera* r = sc.water->getReflectedCausticsCamera();
+    ASSERT_NE(r, nullptr);
+    EXPECT_TRUE(r->isReflected());
+    // the reflective caustics texture: F where the reflected light lands (on the mirrored wall)
+    osg::ref_ptr<osg::Image> img = sc.h.readTexture(r->getCausticsTexture());
+    double top = 0;
+    for (int j = 0; j < img->t(); ++j)
+        for (int i = 0; i < img->s(); ++i) top = std::max(top, value(img.get(), i, j));
+    EXPECT_NEAR(top, F, 0.02 * F);
+    EXPECT_TRUE(allFinite(img.get()));
+    s->setReflectiveCaustics(false);
+    EXPECT_NEAR(wallColour(), std::cos(e), 0.01) << "off: the direct sun alone";
+    EXPECT_EQ(sc.water->getReflectedCausticsCamera(), nullptr);
 }
 
 TEST(RenderCaustics, UnderAPerChannelWaterEachChannelOfTheSunFadesByItsOwnExtinction)

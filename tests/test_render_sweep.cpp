@@ -73,6 +73,7 @@ struct Group {
     WaterSettings::UnderwaterModel underwater;
     int gather;       // -1 caustics off, else a CausticsGather
     bool areaMesh;    // the caustics by the area-ratio mesh (else photon splatting), supersampled every other time
+    bool reflective;  // reflective caustics too
     int textureSize, photonGrid, viewport;
     bool rotation, glow, reflection, refraction;
     DebugOutput debug;
@@ -113,6 +114,7 @@ std::vector<Group> groups()
         x.underwater = pick(under, i / 3);
         x.gather = pick(gathers, i / 2);
         x.areaMesh = i % 4 >= 2; // with every gather (which changes every other group)
+        x.reflective = i % 5 == 2;
         // huge targets (8192: clamped to 4096 by the settings, then to the context) cost seconds a
         // frame on a software rasteriser: one group each, the others alternate tiny and small
         x.textureSize = i == 10 ? 8192 : (i % 2 ? 16 : 64);
@@ -165,7 +167,7 @@ std::string describe(const Group& g, const Config& c)
     s << sceneName(g.scene) << ", "
       << (g.steps ? "iterative " + std::to_string(g.steps) : std::string(g.planeLookups ? "plane" : "one-step"))
       << (g.planeLookups ? ", plane reflection" : "")
-      << ", fresnel " << g.fresnel << ", underwater " << g.underwater << ", gather " << g.gather << (g.areaMesh ? " (mesh)" : "") << ", textures "
+      << ", fresnel " << g.fresnel << ", underwater " << g.underwater << ", gather " << g.gather << (g.areaMesh ? " (mesh)" : "") << (g.reflective ? " (reflective)" : "") << ", textures "
       << g.textureSize << ", photons " << g.photonGrid << ", viewport " << g.viewport << ", rotation " << g.rotation
       << ", glow " << g.glow << ", debug " << g.debug << "; eye height " << c.eyeHeight << ", pitch " << c.pitch
       << ", yaw " << c.yaw << ", sun " << c.sunElevation << ", IOR " << c.ior << ", t " << c.time << ", amplitude "
@@ -186,6 +188,7 @@ void apply(WaterNode* water, const Group& g)
     if (g.gather >= 0) s->setCausticsGather(WaterSettings::CausticsGather(g.gather));
     s->setCausticsMethod(g.areaMesh ? WaterSettings::CAUSTICS_AREA_MESH : WaterSettings::CAUSTICS_PHOTONS);
     s->setCausticsSupersampling(g.areaMesh && g.steps % 2 == 1);
+    s->setReflectiveCaustics(g.reflective);
     s->setReflectionTextureSize(g.textureSize);
     s->setRefractionTextureSize(g.textureSize);
     s->setCausticsResolution(g.textureSize);
@@ -234,6 +237,11 @@ Outputs outputsOf(Harness& h, WaterNode* water)
         o.list.push_back({ "sun depth", c->getDepthTexture() });
         o.list.push_back({ "photons", c->getPhotonTexture() });
         o.list.push_back({ "caustics", c->getCausticsTexture() });
+    }
+    if (CausticsCamera* r = water->getReflectedCausticsCamera()) {
+        o.list.push_back({ "reflected sun depth", r->getDepthTexture() });
+        o.list.push_back({ "reflected photons", r->getPhotonTexture() });
+        o.list.push_back({ "reflective caustics", r->getCausticsTexture() });
     }
     return o;
 }

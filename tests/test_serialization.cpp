@@ -54,6 +54,7 @@ osg::ref_ptr<WaterNode> pond()
     s->setCausticsGather(WaterSettings::GATHER_CPU);
     s->setCausticsMethod(WaterSettings::CAUSTICS_AREA_MESH);
     s->setCausticsSupersampling(true);
+    s->setReflectiveCaustics(true);
     s->setEnvironmentMapEnabled(true);
     s->setEnvironmentMapSize(128);
     s->setUnderwaterModel(WaterSettings::UNDERWATER_THESIS);
@@ -112,6 +113,7 @@ TEST(Serialization, ExpectedTextReadsBackIntoTheSameNode)
     EXPECT_EQ(s->getCausticsGather(), WaterSettings::GATHER_CPU);
     EXPECT_EQ(s->getCausticsMethod(), WaterSettings::CAUSTICS_AREA_MESH);
     EXPECT_TRUE(s->getCausticsSupersampling());
+    EXPECT_TRUE(s->getReflectiveCaustics());
     EXPECT_TRUE(s->getEnvironmentMapEnabled());
     EXPECT_EQ(s->getEnvironmentMapSize(), 128);
     EXPECT_EQ(s->getCausticsResolution(), 256); // absent: default

@@ -47,6 +47,7 @@ std::vector<Technique> allTechniques()
                      s.setCausticsMethod(WaterSettings::CAUSTICS_AREA_MESH);
                      s.setCausticsSupersampling(true);
                  } });
+    t.push_back({ "caustics-reflective", [](WaterSettings& s) { s.setReflectiveCaustics(true); } });
     t.push_back({ "glow-off", [](WaterSettings& s) { s.setGlowEnabled(false); } });
     t.push_back({ "quality-fast", [](WaterSettings& s) { s.setQuality(WaterSettings::QUALITY_FAST); } });
     t.push_back({ "quality-exact", [](WaterSettings& s) { s.setQuality(WaterSettings::QUALITY_EXACT); } });

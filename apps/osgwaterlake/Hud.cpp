@@ -29,7 +29,8 @@ std::string describeCaustics(const osgWater::WaterNode& water)
     const WaterSettings& s = *water.getSettings();
     if (!s.getCausticsEnabled()) return "off";
     std::ostringstream o;
-    o << WaterSettings::causticsMethodName(s.getCausticsMethod()) << (s.getCausticsSupersampling() ? " 2x2" : "") << ", "
+    o << WaterSettings::causticsMethodName(s.getCausticsMethod()) << (s.getCausticsSupersampling() ? " 2x2" : "")
+      << (s.getReflectiveCaustics() ? " + reflective" : "") << ", "
       << osgWater::CausticsCamera::gatherName(water.getActiveCausticsGather())
       << (s.getCausticsGather() != WaterSettings::GATHER_AUTO ? ""
           : water.getCausticsCamera() && water.getCausticsCamera()->isAutoGatherSettled() ? " (auto)" : " (auto, timing)") << " " << s.getCausticsResolution()
@@ -62,7 +63,7 @@ public:
                       c ? c->getMilliseconds() : -1.0);
         _text->setText(std::string(line) + describeSettings(*_water->getSettings()) + ", caustics " +
                        describeCaustics(*_water) +
-                       "\nkeys: r reflection  f refraction  t technique  e reflection lookup  +/- steps  m fresnel  o rotation  k caustics  g gather  a mesh  x 2x2  v environment  u under water  n model  l glow  s stats  arrows move");
+                       "\nkeys: r reflection  f refraction  t technique  e reflection lookup  +/- steps  m fresnel  o rotation  k caustics  g gather  a mesh  x 2x2  y reflective  v environment  u under water  n model  l glow  s stats  arrows move");
         traverse(node, nv);
     }
 

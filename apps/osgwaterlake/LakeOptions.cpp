@@ -68,7 +68,8 @@ void LakeOptions::describe(osg::ApplicationUsage& u)
     u.addCommandLineOption("--no-caustics", "Switch caustics off");
     u.addCommandLineOption("--gather <auto|copy|texture|cpu>", "Caustics photon gather: points from a copied vertex buffer, points reading the photon texture, CPU");
     u.addCommandLineOption("--caustics <photons|mesh>", "Caustics method: photon splatting (thesis) or the area-ratio mesh (DeepWater)");
-    u.addCommandLineOption("--supersample", "Caustics: trace the surface 2x2 times per photon texel");
+    u.addCommandLineOption("--supersample", "Caustics: the gather drawn four times, jittered by a quarter texel (2x2 supersampling)");
+    u.addCommandLineOption("--reflective-caustics", "The sun reflected off the water lights what stands above it");
     u.addCommandLineOption("--caustics-size <n>", "Caustics texture size (default 256)");
     u.addCommandLineOption("--photons <n>", "Photons per side of the photon grid (default 512)");
     u.addCommandLineOption("--sun <x> <y> <z>", "Direction towards the sun");
@@ -146,6 +147,7 @@ bool LakeOptions::read(osg::ArgumentParser& args)
                         &WaterSettings::setCausticsMethod, _setters))
         return false;
     if (args.read("--supersample")) _setters.push_back([](WaterSettings& w) { w.setCausticsSupersampling(true); });
+    if (args.read("--reflective-caustics")) _setters.push_back([](WaterSettings& w) { w.setReflectiveCaustics(true); });
     if (args.read("--caustics-size", n)) _setters.push_back([n](WaterSettings& w) { w.setCausticsResolution(n); });
     if (args.read("--photons", n)) _setters.push_back([n](WaterSettings& w) { w.setPhotonGridSize(n); });
     if (!readEnumOption(args, "--underwater-model", "physical|thesis", WaterSettings::underwaterModelFromName,

@@ -44,6 +44,7 @@ bool WaterKeys::handle(const osgGA::GUIEventAdapter& ea, osgGA::GUIActionAdapter
                                                                                    : WaterSettings::CAUSTICS_PHOTONS);
         return true;
     case 'x': s.setCausticsSupersampling(!s.getCausticsSupersampling()); return true;
+    case 'y': s.setReflectiveCaustics(!s.getReflectiveCaustics()); return true;
     case 'v': s.setEnvironmentMapEnabled(!s.getEnvironmentMapEnabled()); return true;
     default: break;
     }
@@ -89,6 +90,7 @@ void WaterKeys::getUsage(osg::ApplicationUsage& u) const
     u.addKeyboardMouseBinding("g", "Next caustics gather (auto, copy, texture, CPU)");
     u.addKeyboardMouseBinding("a", "Switch caustics method (photon splatting / area-ratio mesh)");
     u.addKeyboardMouseBinding("x", "Toggle caustics 2x2 supersampling");
+    u.addKeyboardMouseBinding("y", "Toggle reflective caustics (the sun reflected onto what stands above the water)");
     u.addKeyboardMouseBinding("v", "Toggle the environment cube map");
     u.addKeyboardMouseBinding("u", "Go under water / back above it");
     u.addKeyboardMouseBinding("n", "Next underwater model (physical, thesis)");
