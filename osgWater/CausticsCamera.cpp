@@ -5,6 +5,7 @@
 #include <osg/GLExtensions>
 #include <osgUtil/CullVisitor>
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <osgWater/Shaders>
 
@@ -111,6 +112,12 @@ osg::BoundingBox CausticsCamera::reflectedBox(const Frame& f)
     return box;
 }
 
+osg::Vec2d CausticsCamera::tileOrigin(const Frame& f)
+{
+    const osg::Vec3 c = f.water.valid() ? f.water.center() : osg::Vec3();
+    return osg::Vec2d(c.x() - 0.5 * f.tile, c.y() - 0.5 * f.tile);
+}
+
 bool CausticsCamera::needed(const Frame& f)
 {
     return f.settings && f.settings->getCausticsEnabled() && f.surface && f.water.valid() && f.scene.valid()
@@ -166,7 +173,24 @@ void CausticsCamera::update(const Frame& f)
     depthPass.towardsSun = f.towardsSun;
     depthPass.level = f.level;
     applyLighting(depthPass);
-    _photons->setSun(f.surface, sun, proj, _depth.get(), _reflected ? &mirror : nullptr);
+    _tiled = !_reflected && f.tile > 0.0;
+    if (_tiled) {
+        // one tile of the surface seen straight down, its light on the flat bed (the depth map above
+        // still gives the shadows)
+        const osg::Vec2d o = tileOrigin(f);
+        const double above = f.clearance + 1.0;
+        const osg::Matrixd tileView = osg::Matrixd::translate(-o.x(), -o.y(), -(f.level + above));
+        // texel centres on both edges of the tile, grid - 1 samples apart: the repeating surface's
+        // mesh closes on its neighbour's copy without a gap or an overlap
+        const double half = 0.5 * f.tile / std::max(getGridSize() - 1, 1);
+        const osg::Matrixd tileProj = osg::Matrixd::ortho(-half, f.tile + half, -half, f.tile + half, 0.5,
+                                                          2.0 * above + 2.0 + (f.level - f.tileBedZ));
+        _lighting.localToTile = osg::Matrixd::translate(-o.x(), -o.y(), 0.0) * osg::Matrixd::scale(1.0 / f.tile, 1.0 / f.tile, 1.0);
+        _photons->setTile(f.surface, tileView, tileProj, f.towardsSun, f.tileBedZ, _lighting.localToTile);
+    } else {
+        _photons->setSun(f.surface, sun, proj, _depth.get(), _reflected ? &mirror : nullptr);
+    }
+    _lighting.tiled = _tiled;
 
     double l, r, b, t, n, fa;
     proj.getOrtho(l, r, b, t, n, fa);
@@ -181,6 +205,11 @@ void CausticsCamera::update(const Frame& f)
     const osg::Texture::FilterMode filter = f.settings->getCausticsFiltering() ? osg::Texture::LINEAR
                                                                              : osg::Texture::NEAREST;
     osg::Texture2D* c = _gather->getCausticsTexture();
+    const osg::Texture::WrapMode wrap = _tiled ? osg::Texture::REPEAT : osg::Texture::CLAMP_TO_EDGE; // a tile repeats
+    if (c->getWrap(osg::Texture::WRAP_S) != wrap) {
+        c->setWrap(osg::Texture::WRAP_S, wrap);
+        c->setWrap(osg::Texture::WRAP_T, wrap);
+    }
     if (c->getFilter(osg::Texture::MAG_FILTER) != filter) {
         c->setFilter(osg::Texture::MIN_FILTER, filter);
         c->setFilter(osg::Texture::MAG_FILTER, filter);
@@ -205,9 +234,15 @@ WaterSettings::CausticsGather CausticsCamera::resolveGather(const WaterSettings&
                                                             const CausticsSupport& support)
 {
     const WaterSettings::CausticsGather wanted = settings.getCausticsGather();
-    const WaterSettings::CausticsMethod method = settings.getCausticsMethod();
+    // a tile is the area-ratio mesh's (photon splats would lose the light straddling its edges)
+    const WaterSettings::CausticsMethod method = _tiled ? WaterSettings::CAUSTICS_AREA_MESH : settings.getCausticsMethod();
+    if (_tiled && settings.getCausticsMethod() != method && !_saidTiledMesh) {
+        _saidTiledMesh = true;
+        OSG_NOTICE << "osgWater: tileable caustics are gathered by the area-ratio mesh" << std::endl;
+    }
     const bool supersampled = settings.getCausticsSupersampling();
-    if ((method != _gather->getCausticsMethod() || supersampled != _gather->getSupersampled()) &&
+    if ((method != _gather->getCausticsMethod() || supersampled != _gather->getSupersampled() ||
+         _tiled != _gather->getTiled()) &&
         _activeGather != WaterSettings::GATHER_AUTO) {
         // the paths' speeds differ by method and passes: the automatic choice is made again
         _trial = _trialFrame = 0;
@@ -231,7 +266,7 @@ WaterSettings::CausticsGather CausticsCamera::resolveGather(const WaterSettings&
         OSG_DEBUG << "osgWater: caustics gather: " << gatherName(g) << std::endl;
         _activeGather = g;
     }
-    _gather->setMethod(g, method, supersampled);
+    _gather->setMethod(g, method, supersampled, _tiled);
     return g;
 }
 

@@ -3,6 +3,7 @@
 #include <osgWater/PassCamera>
 #include <osgWater/DrawNodes>
 #include <osgWater/SceneLighting>
+#include <osgWater/PassMath>
 
 using namespace osgWater;
 
@@ -38,6 +39,7 @@ PhotonCamera::PhotonCamera(osg::StateSet* waterState, int gridSize, bool floatTa
 void PhotonCamera::setSun(osg::Node* surface, const osg::Matrixd& view, const osg::Matrixd& projection,
                           osg::Texture2D* sunDepth, const osg::Matrixd* mirror)
 {
+    setDefineIf(_photonState.get(), "OSGWATER_TILED_PHOTONS", false);
     setDefineIf(_photonState.get(), "OSGWATER_REFLECTED_PHOTONS", mirror != nullptr);
     if (mirror) {
         // the mirror in the sun's eye space: back to the water's frame, mirrored, forth again
@@ -52,4 +54,29 @@ void PhotonCamera::setSun(osg::Node* surface, const osg::Matrixd& view, const os
     _photonState->getUniform("osgWater_RefractionProj")->set(osg::Matrixf(projection));
     _photonState->getUniform("osgWater_RefractionInvProj")->set(osg::Matrixf(osg::Matrixd::inverse(projection)));
     _photonState->setTextureAttribute(UNIT_REFRACTION_DEPTH, sunDepth);
+}
+
+namespace {
+template <class T> void setPhotonUniform(osg::StateSet* ss, const char* name, const T& value)
+{
+    if (osg::Uniform* u = ss->getUniform(name)) u->set(value);
+    else ss->addUniform(new osg::Uniform(name, value));
+}
+}
+
+void PhotonCamera::setTile(osg::Node* surface, const osg::Matrixd& view, const osg::Matrixd& projection,
+                           const osg::Vec3& towardsSun, double bedZ, const osg::Matrixd& localToTile)
+{
+    _surface = surface;
+    _draw->setNode(0, surface);
+    setViewMatrix(view);
+    setProjectionMatrix(projection);
+    osg::StateSet* ss = _photonState.get();
+    setDefineIf(ss, "OSGWATER_REFLECTED_PHOTONS", false);
+    setDefineIf(ss, "OSGWATER_TILED_PHOTONS", true);
+    osg::Vec3f sun = osg::Matrixd::transform3x3(towardsSun, view);
+    sun.normalize();
+    setPhotonUniform(ss, "osgWater_TileSun", sun);
+    setPhotonUniform(ss, "osgWater_TileBed", osg::Vec4f(planeToEye(osg::Vec4d(0.0, 0.0, 1.0, -bedZ), view)));
+    setPhotonUniform(ss, "osgWater_EyeToTile", osg::Matrixf(osg::Matrixd::inverse(view) * localToTile));
 }

@@ -84,18 +84,18 @@ private:
 class CpuGather : public osg::Drawable
 {
 public:
-    CpuGather() : _grid(1), _res(1), _scale(1.0f), _mesh(false), _supersampled(false) {}
+    CpuGather() : _grid(1), _res(1), _scale(1.0f), _spacing(0.0f), _mesh(false) {}
     CpuGather(osg::Texture2D* photons, int gridSize, osg::Texture2D* caustics, int resolution, float scale,
-              WaterSettings::CausticsMethod method, bool supersampled)
-        : _photons(photons), _caustics(caustics), _grid(gridSize), _res(resolution), _scale(scale),
-          _mesh(method == WaterSettings::CAUSTICS_AREA_MESH), _supersampled(supersampled)
+              WaterSettings::CausticsMethod method, const std::vector<GatherShift>& passes, float spacing)
+        : _photons(photons), _caustics(caustics), _grid(gridSize), _res(resolution), _scale(scale), _spacing(spacing),
+          _mesh(method == WaterSettings::CAUSTICS_AREA_MESH), _passes(passes)
     {
         setUseDisplayList(false);
         setCullingActive(false);
     }
     CpuGather(const CpuGather& o, const osg::CopyOp& op = osg::CopyOp::SHALLOW_COPY)
         : osg::Drawable(o, op), _photons(o._photons), _caustics(o._caustics), _grid(o._grid), _res(o._res),
-          _scale(o._scale), _mesh(o._mesh), _supersampled(o._supersampled) {}
+          _scale(o._scale), _spacing(o._spacing), _mesh(o._mesh), _passes(o._passes) {}
     META_Object(osgWater, CpuGather)
 
     void drawImplementation(osg::RenderInfo& ri) const override
@@ -109,14 +109,12 @@ public:
         state.applyTextureAttribute(UNIT_PASS_INPUT, _photons.get());
         glPixelStorei(GL_PACK_ALIGNMENT, 4);
         glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_FLOAT, _in.data());
-        const GatherShift once;
-        const GatherShift* shifts = _supersampled ? kSupersampleShifts : &once;
-        for (int pass = 0; pass < (_supersampled ? 4 : 1); ++pass) {
+        for (const GatherShift& shift : _passes) {
             if (_mesh) {
-                meshPhotons(_in.data(), _grid, _scale, _out.data(), _res, shifts[pass]);
+                meshPhotons(_in.data(), _grid, _scale, _out.data(), _res, shift, _spacing);
             } else {
                 const float weight = float(_res) * _res / (float(_grid) * _grid) / _scale;
-                splatPhotons(_in.data(), std::size_t(_grid) * _grid, weight, _out.data(), _res, shifts[pass]);
+                splatPhotons(_in.data(), std::size_t(_grid) * _grid, weight, _out.data(), _res, shift);
             }
         }
         state.applyTextureAttribute(UNIT_PASS_INPUT, _caustics.get());
@@ -127,8 +125,9 @@ public:
 protected:
     osg::ref_ptr<osg::Texture2D> _photons, _caustics;
     int _grid, _res;
-    float _scale;
-    bool _mesh, _supersampled;
+    float _scale, _spacing;
+    bool _mesh;
+    std::vector<GatherShift> _passes;
     mutable std::vector<float> _in, _out;
 };
 
@@ -178,7 +177,10 @@ osg::Group* PhotonGather::makePath(const PathKey& key)
 {
     const WaterSettings::CausticsGather gather = std::get<0>(key);
     const WaterSettings::CausticsMethod method = std::get<1>(key);
-    const bool supersampled = std::get<2>(key);
+    const bool supersampled = std::get<2>(key), tiled = std::get<3>(key);
+    const std::vector<GatherShift> passes = gatherPasses(supersampled, tiled, _resolution);
+    // a tile's samples reach both its edges (the surface repeats: the mesh closes on its neighbour's)
+    const float spacing = float(_resolution) / float(tiled ? std::max(_grid - 1, 1) : _grid);
     const unsigned int n = unsigned(_grid) * unsigned(_grid);
     osg::ref_ptr<osg::Drawable> draw;
     osg::ref_ptr<osg::StateSet> state = new osg::StateSet;
@@ -199,17 +201,18 @@ osg::Group* PhotonGather::makePath(const PathKey& key)
         state->setDefine("OSGWATER_SPLAT_TEXTURE");
         break;
     }
-    default: // the CPU runs the supersampling's four passes itself
-        draw = new CpuGather(_photons.get(), _grid, _caustics.get(), _resolution, _valueScale, method, supersampled);
+    default: // the CPU runs the passes itself
+        draw = new CpuGather(_photons.get(), _grid, _caustics.get(), _resolution, _valueScale, method, passes, spacing);
         break;
     }
     if (method == WaterSettings::CAUSTICS_AREA_MESH) state->setDefine("OSGWATER_AREA_MESH");
+    state->addUniform(new osg::Uniform("osgWater_SampleSpacing", spacing));
     osg::Group* path = new osg::Group;
     path->setStateSet(state.get());
     path->setCullingActive(false);
-    if (supersampled && gather != WaterSettings::GATHER_CPU) {
-        // DeepWater's 2x2 supersampling: the same draw four times, each shifted and weighted
-        for (const GatherShift& shift : kSupersampleShifts) {
+    if (passes.size() > 1 && gather != WaterSettings::GATHER_CPU) {
+        // DeepWater's 2x2 supersampling and nine tiles: the same draw again, shifted and weighted
+        for (const GatherShift& shift : passes) {
             osg::Geode* pass = geodeOf(draw.get());
             pass->getOrCreateStateSet()->addUniform(
                 new osg::Uniform("osgWater_GatherShift", osg::Vec3f(shift.x, shift.y, shift.weight)));
@@ -224,15 +227,16 @@ osg::Group* PhotonGather::makePath(const PathKey& key)
 }
 
 void PhotonGather::setMethod(WaterSettings::CausticsGather gather, WaterSettings::CausticsMethod method,
-                            bool supersampled)
+                            bool supersampled, bool tiled)
 {
-    if (gather == _method && method == _causticsMethod && supersampled == _supersampled) return;
+    if (gather == _method && method == _causticsMethod && supersampled == _supersampled && tiled == _tiled) return;
     _method = gather;
     _causticsMethod = method;
     _supersampled = supersampled;
+    _tiled = tiled;
     // the splat program's variants of the paths tried before are not needed any more
     getStateSet()->getAttribute(osg::StateAttribute::PROGRAM)->releaseGLObjects(nullptr);
-    const PathKey wanted(gather, method, supersampled);
+    const PathKey wanted(gather, method, supersampled, tiled);
     if (gather != WaterSettings::GATHER_AUTO && !_paths.count(wanted)) _paths[wanted] = makePath(wanted);
     for (const auto& p : _paths) {
         osg::Group* path = p.second.get();

@@ -1,13 +1,15 @@
 #include <osgWater/PhotonSplat>
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <utility>
 
 namespace {
-// the acceptance test of splat.vert (NaN fails every comparison)
+// the acceptance test of splat.vert (NaN fails every comparison): a photon on the texture or on
+// one of its neighbours (which the tiled gather shifts in)
 bool acceptedPhoton(const float* p)
 {
-    return p[3] > 0.5f && p[2] > 0.0f && p[0] > -0.01f && p[0] < 1.01f && p[1] > -0.01f && p[1] < 1.01f;
+    return p[3] > 0.5f && p[2] > 0.0f && p[0] > -1.01f && p[0] < 2.01f && p[1] > -1.01f && p[1] < 2.01f;
 }
 
 struct MeshVertex {
@@ -49,10 +51,10 @@ void rasterTriangle(MeshVertex a, MeshVertex b, MeshVertex c, float sourceArea, 
 }
 
 void osgWater::meshPhotons(const float* photons, int grid, float valueScale, float* caustics, int size,
-                           const GatherShift& shift)
+                           const GatherShift& shift, float spacing)
 {
     // a surface cell in caustics pixels: the photon texel's side is size / grid of them
-    const float texel = float(size) / float(grid);
+    const float texel = spacing > 0.0f ? spacing : float(size) / float(grid);
     const float sourceArea = 0.5f * texel * texel;
     auto vertex = [&](int i, int j, MeshVertex& m) {
         const float* p = photons + 4 * (std::size_t(j) * grid + i);
@@ -89,4 +91,17 @@ void osgWater::splatPhotons(const float* photons, std::size_t count, float weigh
                 caustics[std::size_t(ty) * size + tx] += e * w[j][k];
             }
     }
+}
+
+std::vector<osgWater::GatherShift> osgWater::gatherPasses(bool supersampled, bool tiled, int size)
+{
+    std::vector<GatherShift> passes;
+    const std::vector<GatherShift> jitters = supersampled ? std::vector<GatherShift>(std::begin(kSupersampleShifts),
+                                                                                      std::end(kSupersampleShifts))
+                                                          : std::vector<GatherShift>(1);
+    for (int ty = tiled ? -1 : 0; ty <= (tiled ? 1 : 0); ++ty)
+        for (int tx = tiled ? -1 : 0; tx <= (tiled ? 1 : 0); ++tx)
+            for (const GatherShift& j : jitters)
+                passes.push_back({ j.x + float(tx * size), j.y + float(ty * size), j.weight });
+    return passes;
 }

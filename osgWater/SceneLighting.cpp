@@ -45,6 +45,8 @@ void osgWater::applySceneLighting(osg::StateSet* ss, const SceneLighting& l, con
     setUniform(ss, "osgWater_SunDepthBias", c ? c->depthBias : osg::Vec2f(0.0f, 0.0f));
     setUniform(ss, "osgWater_CausticsChannels", c ? c->channelExtinction : osg::Vec3f());
     setDefineIf(ss, "OSGWATER_CAUSTICS_CHANNELS", c && c->channelExtinction != osg::Vec3f());
+    setDefineIf(ss, "OSGWATER_CAUSTICS_TILED", c && c->tiled);
+    setUniform(ss, "osgWater_EyeToTile", c && c->tiled ? osg::Matrixf(osg::Matrixd::inverse(view) * c->localToTile) : osg::Matrixf());
     if (c) {
         ss->setTextureAttribute(UNIT_CAUSTICS, c->caustics.get());
         ss->setTextureAttribute(UNIT_SUN_DEPTH, c->depth.get());

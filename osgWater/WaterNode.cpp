@@ -476,7 +476,8 @@ void WaterNode::updateSceneFacts(const osg::BoundingSphere& children)
     const WaterSettings& s = *_settings;
     const bool planes = s.getReflectionLookup() == WaterSettings::REFLECTION_PLANE ||
                         s.getRefractionLookup() == WaterSettings::PLANE_OFFSET;
-    const bool focus = s.getCausticsEnabled() && s.getCausticsFocused();
+    // the caustics' window, and the flat bed of tileable caustics, come from the lit water too
+    const bool focus = s.getCausticsEnabled() && (s.getCausticsFocused() || s.getCausticsTileSize() > 0.0f);
     const double level = _surface->getLevel();
     LitWater lit;
     {
@@ -564,6 +565,14 @@ void WaterNode::prepareCaustics(ViewFrame& v)
         f.clearance = clearance();
         f.scene = _sceneBoxes.whole(); // brought up to date by the update traversal (updateSceneFacts)
         f.litWater = _sceneBoxes.litWater().box;
+        // tileable caustics over a flat bed at the lit water's mean depth (1 m without lit water)
+        f.tile = s.getCausticsTileSize();
+        f.tileBedZ = _sceneBoxes.litWater().box.valid() ? std::min(_sceneBoxes.litWater().meanBedZ, f.level - 1e-3)
+                                                         : f.level - 1.0;
+        if (f.tile > 0.0 && !(_surface->usesGrid() && WaterSurface::wavesTileOver(_surface->getWaves(), f.tile)) &&
+            !_warnedTile.exchange(true))
+            OSG_WARN << "osgWater: WaterNode \"" << getName() << "\": the waves do not repeat over the caustics tile of "
+                     << f.tile << " m: the tiled caustics show seams" << std::endl;
         f.surface = _surface.get();
         f.settings = &s;
         _causticsNeeded = CausticsCamera::needed(f);
@@ -573,7 +582,8 @@ void WaterNode::prepareCaustics(ViewFrame& v)
             // photons per texel exactly (a ratio off by a rounding makes a moire of 3s and 4s)
             const int setResolution = fitTexture("causticsResolution", s.getCausticsResolution(), v.support);
             const int setGrid = fitTexture("photonGridSize", s.getPhotonGridSize(), v.support);
-            const int resolution = focusedCount(setResolution, CausticsCamera::focusRatio(f));
+            // (a tile is its own window: not focused)
+            const int resolution = f.tile > 0.0 ? setResolution : focusedCount(setResolution, CausticsCamera::focusRatio(f));
             const int grid = std::max(1, int(std::lround(double(setGrid) * resolution / setResolution)));
             if (!_caustics.valid() || !_caustics->matches(resolution, grid, v.support.floatTargets))
             {

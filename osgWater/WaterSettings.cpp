@@ -52,7 +52,7 @@ WaterSettings::WaterSettings()
       _refractionCameraRotation(true), _reflectionEnabled(true), _refractionEnabled(true),
       _causticsEnabled(true), _causticsFiltering(true), _causticsFocused(true), _causticsResolution(256), _photonGridSize(512),
       _causticsIntensity(1.0f), _causticsGather(GATHER_AUTO), _causticsMethod(CAUSTICS_PHOTONS),
-      _causticsSupersampling(false), _reflectiveCaustics(false), _environmentMapEnabled(false), _environmentMapSize(256),
+      _causticsSupersampling(false), _reflectiveCaustics(false), _causticsTileSize(0.0f), _environmentMapEnabled(false), _environmentMapSize(256),
       _underwaterModel(UNDERWATER_PHYSICAL), _glowEnabled(true), _glowIntensity(1.0f), _glowRadius(3.0f),
       _glowResolution(0.25f), _glowExponent(200.0f),
       _sunDirection(defaultSunDirection()), _sunColor(1.0f, 1.0f, 0.9f), _ambientColor(0.35f, 0.38f, 0.45f),
@@ -93,7 +93,7 @@ WaterSettings::WaterSettings(const WaterSettings& o, const osg::CopyOp& copyop)
       _causticsResolution(o._causticsResolution), _photonGridSize(o._photonGridSize),
       _causticsIntensity(o._causticsIntensity), _causticsGather(o._causticsGather),
       _causticsMethod(o._causticsMethod), _causticsSupersampling(o._causticsSupersampling),
-      _reflectiveCaustics(o._reflectiveCaustics),
+      _reflectiveCaustics(o._reflectiveCaustics), _causticsTileSize(o._causticsTileSize),
       _environmentMapEnabled(o._environmentMapEnabled), _environmentMapSize(o._environmentMapSize),
       _underwaterModel(o._underwaterModel), _glowEnabled(o._glowEnabled), _glowIntensity(o._glowIntensity),
       _glowRadius(o._glowRadius), _glowResolution(o._glowResolution), _glowExponent(o._glowExponent),
@@ -209,6 +209,7 @@ void WaterSettings::setCausticsMotionTolerance(float t)
 void WaterSettings::setRefractionTextureSize(int s) { _refractionTextureSize = clampInt("refractionTextureSize", s, 16, 4096); touch(); }
 void WaterSettings::setCausticsResolution(int s) { _causticsResolution = clampInt("causticsResolution", s, 16, 4096); touch(); }
 void WaterSettings::setPhotonGridSize(int s) { _photonGridSize = clampInt("photonGridSize", s, 16, 4096); touch(); }
+void WaterSettings::setCausticsTileSize(float m) { _causticsTileSize = clampOr("causticsTileSize", m, 0.0f, 10000.0f, 0.0f); touch(); }
 void WaterSettings::setEnvironmentMapSize(int s) { _environmentMapSize = clampInt("environmentMapSize", s, 16, 2048); touch(); }
 void WaterSettings::setCausticsIntensity(float v) { _causticsIntensity = clampOr("causticsIntensity", v, 0.0f, 100.0f, 1.0f); touch(); }
 void WaterSettings::setGlowIntensity(float v) { _glowIntensity = clampOr("glowIntensity", v, 0.0f, 100.0f, 1.0f); touch(); }

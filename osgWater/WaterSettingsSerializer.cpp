@@ -107,6 +107,7 @@ REGISTER_OBJECT_WRAPPER(osgWater_WaterSettings, new osgWater::WaterSettings, osg
     END_ENUM_SERIALIZER();
     ADD_BOOL_SERIALIZER(CausticsSupersampling, false);
     ADD_BOOL_SERIALIZER(ReflectiveCaustics, false);
+    ADD_PRECISE_FLOAT_SERIALIZER(CausticsTileSize, 0.0f);
     ADD_BOOL_SERIALIZER(EnvironmentMapEnabled, false);
     ADD_INT_SERIALIZER(EnvironmentMapSize, 256);
     ADD_PRECISE_FLOAT_SERIALIZER(CausticsMotionTolerance, 0.5f);

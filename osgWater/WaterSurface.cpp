@@ -45,6 +45,37 @@ std::string meshProblem(const osg::Geometry& mesh)
 }
 
 double Wave::wavenumber() const { return kTwoPi / std::max(double(wavelength), 1.0e-3); }
+bool WaterSurface::wavesTileOver(const std::vector<Wave>& waves, double tile, double tolerance)
+{
+    if (!(tile > 0.0)) return false;
+    for (const Wave& w : waves) {
+        if (w.amplitude == 0.0f) continue; // a still wave repeats over anything
+        const double cycles[2] = { w.direction.x() * tile / std::max(double(w.wavelength), 1.0e-3),
+                                   w.direction.y() * tile / std::max(double(w.wavelength), 1.0e-3) };
+        for (double c : cycles)
+            if (!(std::abs(c - std::round(c)) <= tolerance)) return false;
+    }
+    return true;
+}
+
+std::vector<Wave> WaterSurface::wavesSnappedToTile(const std::vector<Wave>& waves, double tile)
+{
+    if (!(tile > 0.0)) return waves;
+    std::vector<Wave> snapped = waves;
+    for (Wave& w : snapped) {
+        const double cycles = tile / std::max(double(w.wavelength), 1.0e-3);
+        double m = std::round(w.direction.x() * cycles), n = std::round(w.direction.y() * cycles);
+        if (m == 0.0 && n == 0.0) { // longer than the tile: one cycle along its main axis
+            if (std::abs(w.direction.x()) >= std::abs(w.direction.y())) m = w.direction.x() < 0.0f ? -1.0 : 1.0;
+            else n = w.direction.y() < 0.0f ? -1.0 : 1.0;
+        }
+        const double length = std::sqrt(m * m + n * n);
+        w.direction.set(float(m / length), float(n / length));
+        w.wavelength = float(tile / length);
+    }
+    return snapped;
+}
+
 double Wave::angularFrequency() const { return std::sqrt(kGravity * wavenumber()); }
 
 std::vector<Wave> osgWater::defaultWaves()

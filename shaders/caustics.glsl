@@ -13,6 +13,9 @@ uniform vec2 osgWater_SunDepthBias;      // depth bias: constant + per unit of s
 uniform vec3 osgWater_CausticsChannels;  // per-channel sun extinction beyond the photons', per metre of depth
 
 in vec3 vSun;
+#ifdef OSGWATER_CAUSTICS_TILED
+in vec2 vTile;
+#endif
 
 // Share of the direct sun reaching a fragment per channel (1 above the water or without caustics).
 // Irradiance on a surface of normal n is C (n.L): C counts power per area seen from the sun. The
@@ -21,15 +24,21 @@ in vec3 vSun;
 vec3 owUnderwaterSun(float ndl)
 {
     if (vAboveWater >= 0.0) return vec3(1.0);
-    if (any(lessThan(vSun.xy, vec2(0.0))) || any(greaterThan(vSun.xy, vec2(1.0)))) return vec3(1.0);
+    bool inMap = all(greaterThanEqual(vSun.xy, vec2(0.0))) && all(lessThanEqual(vSun.xy, vec2(1.0)));
+#ifdef OSGWATER_CAUSTICS_TILED
+    vec2 causticsAt = vTile; // the tile repeats under all the water; shadows where the depth map reaches
+#else
+    if (!inMap) return vec3(1.0);
+    vec2 causticsAt = vSun.xy;
+#endif
     float tanSlope = sqrt(max(1.0 - ndl * ndl, 0.0)) / max(ndl, 0.1);
     float bias = osgWater_SunDepthBias.x + osgWater_SunDepthBias.y * tanSlope;
-    if (vSun.z > texture(osgWater_SunDepth, vSun.xy).r + bias) return vec3(0.0);
+    if (inMap && vSun.z > texture(osgWater_SunDepth, vSun.xy).r + bias) return vec3(0.0);
 #ifdef OSGWATER_CAUSTICS_CHANNELS
-    return osgWater_CausticsIntensity * texture(osgWater_CausticsTex, vSun.xy).r
+    return osgWater_CausticsIntensity * texture(osgWater_CausticsTex, causticsAt).r
          * exp(osgWater_CausticsChannels * vAboveWater);
 #else
-    return vec3(osgWater_CausticsIntensity * texture(osgWater_CausticsTex, vSun.xy).r);
+    return vec3(osgWater_CausticsIntensity * texture(osgWater_CausticsTex, causticsAt).r);
 #endif
 }
 #endif

@@ -1,5 +1,5 @@
 #version 130
-#pragma import_defines(OSGWATER_GRID, OSGWATER_FRESNEL, OSGWATER_SEARCH_STEPS, OSGWATER_REFLECTED_PHOTONS)
+#pragma import_defines(OSGWATER_GRID, OSGWATER_FRESNEL, OSGWATER_SEARCH_STEPS, OSGWATER_REFLECTED_PHOTONS, OSGWATER_TILED_PHOTONS)
 // Caustics pass 2: one photon per fragment. The sun ray through this texel is refracted at the
 // surface, its hit on the bed is found by the same depth-texture search as the refraction
 // (here in the sun's depth map, orthographic rays), and the photon is written as
@@ -8,6 +8,10 @@
 // OSGWATER_REFLECTED_PHOTONS (reflective caustics): the sun ray reflected instead, mirrored in the
 // water plane so it runs down through the mirrored scene above the water (the depth map's), with
 // the reflected share F and no water on its way.
+// OSGWATER_TILED_PHOTONS (tileable caustics): the camera looks straight down on one tile of the
+// surface; the refracted ray meets a flat bed (a plane) and the photon is (u, v) its hit in tile
+// units (beyond [0, 1] when it lands in a neighbouring tile), its energy the share of the sun on
+// this texel's piece of surface: (1 - F) exp(-k d) (N.L) / (N.z L.z), per area seen from the sun.
 #define OSGWATER_ORTHO_DEPTH 1
 #pragma include "waves.glsl"
 #pragma include "optics.glsl"
@@ -19,6 +23,11 @@ uniform int osgWater_SearchSteps;
 uniform float osgWater_SearchTolerance;
 #ifdef OSGWATER_REFLECTED_PHOTONS
 uniform mat4 osgWater_MirrorEye; // the mirror in the water plane, in this camera's eye space
+#endif
+#ifdef OSGWATER_TILED_PHOTONS
+uniform vec3 osgWater_TileSun;   // towards the sun, in this (straight-down) camera's eye space
+uniform vec4 osgWater_TileBed;   // the flat bed in eye space: dot(xyz, p) + w = 0, xyz up
+uniform mat4 osgWater_EyeToTile; // eye space -> tile units (x, y)
 #endif
 
 in vec3 vLocal;
@@ -32,6 +41,22 @@ void main()
 #else
     vec3 Nl = owSafeNormalize(vMeshNormal, vec3(0.0, 0.0, 1.0));
 #endif
+#ifdef OSGWATER_TILED_PHOTONS
+    vec3 L = osgWater_TileSun;
+    const vec3 up = vec3(0.0, 0.0, 1.0); // the surface's up, seen straight down
+    vec3 N = owSafeNormalize(gl_NormalMatrix * Nl, up);
+    float cosL = dot(N, L);
+    vec3 T = refract(-L, N, osgWater_IOR.x / osgWater_IOR.y);
+    vec4 photon = vec4(0.0);             // alpha 0: no photon
+    float towardsBed = dot(osgWater_TileBed.xyz, T);
+    float d = towardsBed < -1e-6 ? -(dot(osgWater_TileBed.xyz, vEye) + osgWater_TileBed.w) / towardsBed : -1.0;
+    if (cosL > 0.0 && dot(T, T) > 0.5 && d >= 0.0) {
+        float F = owFresnel(cosL, osgWater_IOR.x, osgWater_IOR.y, osgWater_FresnelQ);
+        vec2 tc = (osgWater_EyeToTile * vec4(vEye + d * T, 1.0)).xy;
+        float share = cosL / max(N.z * L.z, 1e-4); // this texel's surface over its sun-facing area
+        photon = vec4(tc, (1.0 - F) * exp(-osgWater_PhotonExtinction * d) * share, 1.0);
+    }
+#else
     const vec3 L = vec3(0.0, 0.0, 1.0);  // towards the sun, in the sun camera's eye space
     vec3 N = owFaceNormal(owSafeNormalize(gl_NormalMatrix * Nl, L), L, 1e-3);
     float cosL = clamp(dot(N, L), 0.0, 1.0);
@@ -54,5 +79,6 @@ void main()
         photon = vec4(tc, (1.0 - F) * exp(-osgWater_PhotonExtinction * d), 1.0);
 #endif
     }
+#endif
     gl_FragColor = photon;
 }

@@ -1,5 +1,5 @@
 #version 130
-#pragma import_defines(OSGWATER_FOG, OSGWATER_CAUSTICS, OSGWATER_REFLECTED_CAUSTICS)
+#pragma import_defines(OSGWATER_FOG, OSGWATER_CAUSTICS, OSGWATER_CAUSTICS_TILED, OSGWATER_REFLECTED_CAUSTICS)
 // The kit's program for the water's scene (the WaterNode's children): textured, lit by one sun,
 // and clipped by the pass plane so the reflection and refraction passes split the scene.
 // Lit per vertex like the fixed-function pipeline the OBJ loader's materials are made for: with
@@ -21,6 +21,10 @@ out float vAboveWater;
 #ifdef OSGWATER_CAUSTICS
 uniform mat4 osgWater_EyeToSun;   // eye space -> the sun camera's texture space (caustics, shadows)
 out vec3 vSun;
+#endif
+#ifdef OSGWATER_CAUSTICS_TILED
+uniform mat4 osgWater_EyeToTile;  // eye space -> tile units (tileable caustics; the texture wraps)
+out vec2 vTile;
 #endif
 #ifdef OSGWATER_REFLECTED_CAUSTICS
 uniform mat4 osgWater_EyeToReflectedSun; // eye space -> mirrored in the water plane -> the reflected sun's texture space
@@ -48,6 +52,9 @@ void main()
 #endif
 #ifdef OSGWATER_CAUSTICS
     vSun = (osgWater_EyeToSun * eye).xyz; // orthographic: w stays 1
+#endif
+#ifdef OSGWATER_CAUSTICS_TILED
+    vTile = (osgWater_EyeToTile * eye).xy;
 #endif
 #ifdef OSGWATER_REFLECTED_CAUSTICS
     float ndlR = l2 > 1e-20 ? dot(n, osgWater_ReflectedSunEye) * inversesqrt(l2) : 0.0;

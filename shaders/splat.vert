@@ -10,12 +10,13 @@ uniform float osgWater_PhotonWeight;   // caustics texels per photon texel: (siz
 uniform float osgWater_CausticsSize;   // caustics texture size in texels
 uniform float osgWater_PhotonGrid;     // photon target size in texels
 uniform vec3 osgWater_GatherShift;     // this pass's shift (x, y caustics texels) and energy weight (2x2 supersampling)
+uniform float osgWater_SampleSpacing;  // the mesh: caustics texels between neighbouring surface samples
 #ifdef OSGWATER_SPLAT_TEXTURE
 uniform sampler2D osgWater_Photons;
 #endif
 
 #ifdef OSGWATER_AREA_MESH
-noperspective out vec2 vSource;  // where the sample sits on the surface, in caustics texels
+noperspective out vec2 vSource;  // where the sample sits on the surface, in caustics texels (up to a shift)
 noperspective out float vEnergy;
 noperspective out float vDropped; // 0 at a photon, huge at a dropped one: any triangle with one is discarded
 #else
@@ -32,11 +33,12 @@ void main()
     vec2 texel = vec2(gl_VertexID % grid, gl_VertexID / grid); // the index drawn: the photon's texel
     vec4 p = gl_Vertex;
 #endif
-    // NaN fails every comparison: such a photon is dropped like a missing one
-    bool ok = p.w > 0.5 && p.z > 0.0 && p.x > -0.01 && p.x < 1.01 && p.y > -0.01 && p.y < 1.01;
+    // NaN fails every comparison: such a photon is dropped like a missing one; one that landed on
+    // a neighbouring tile is kept (the tiled gather shifts it in)
+    bool ok = p.w > 0.5 && p.z > 0.0 && p.x > -1.01 && p.x < 2.01 && p.y > -1.01 && p.y < 2.01;
 #ifdef OSGWATER_AREA_MESH
     vec2 straightDown = (texel + 0.5) / osgWater_PhotonGrid; // where the sun ray lands unrefracted
-    vSource = straightDown * osgWater_CausticsSize;
+    vSource = texel * osgWater_SampleSpacing;
     vEnergy = ok ? p.z * osgWater_GatherShift.z : 0.0;
     vDropped = ok ? 0.0 : 1e7;
     // a dropped vertex stays near its neighbours, so that its triangles cost few discarded fragments

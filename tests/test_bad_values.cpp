@@ -61,6 +61,7 @@ std::vector<FloatSetting> floatSettings()
         SETTING("clipOffset", setClipOffset, getClipOffset, 0.0f, 100.0f),
         SETTING("causticsIntensity", setCausticsIntensity, getCausticsIntensity, 0.0f, 100.0f),
         SETTING("causticsMotionTolerance", setCausticsMotionTolerance, getCausticsMotionTolerance, 0.0f, 16.0f),
+        SETTING("causticsTileSize", setCausticsTileSize, getCausticsTileSize, 0.0f, 10000.0f),
         SETTING("passTargetScale", setPassTargetScale, getPassTargetScale, 0.0f, 2.0f),
         SETTING("glowIntensity", setGlowIntensity, getGlowIntensity, 0.0f, 100.0f),
         SETTING("glowRadius", setGlowRadius, getGlowRadius, 0.0f, 32.0f),

@@ -142,3 +142,39 @@ TEST(PhotonMesh, SupersampledATexelAnEdgeCrossesGetsTheShareOfItsFourSamplesInsi
     EXPECT_NEAR(four[64 * size + 64], 4.0f, 1e-4f) << "inside: all four";
     EXPECT_NEAR(total(four), total(once), 1e-3 * total(once)) << "the same energy";
 }
+
+TEST(PhotonMesh, GatherPassesAreOneFourNineOrThirtySixAndConserveTheEnergy)
+{
+    EXPECT_EQ(gatherPasses(false, false, 64).size(), 1u);
+    EXPECT_EQ(gatherPasses(true, false, 64).size(), 4u);
+    EXPECT_EQ(gatherPasses(false, true, 64).size(), 9u);
+    EXPECT_EQ(gatherPasses(true, true, 64).size(), 36u);
+    for (bool supersampled : { false, true }) {
+        double weight = 0;
+        for (const GatherShift& p : gatherPasses(supersampled, true, 64)) {
+            weight += p.weight;
+            EXPECT_TRUE(std::fabs(std::round(p.x / 64.0) * 64.0 - p.x) <= 0.25f) << "whole tiles, jittered";
+        }
+        EXPECT_NEAR(weight, 9.0, 1e-6) << "each tile's passes carry the whole energy once";
+    }
+}
+
+TEST(PhotonMesh, TiledLightThatLandsInANeighbouringTileWrapsIn)
+{
+    // a tile's samples on both its edges (n - 1 apart), every photon moved a third of a tile
+    // along +x: wrapped, the light is uniform again, with no seam where the tiles meet
+    const int n = 32, size = 32;
+    std::vector<float> photons = photonsAt(n, [](double, double, double&, double&) {});
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+            float* p = &photons[4 * (std::size_t(j) * n + i)];
+            p[0] = float(i) / (n - 1) + 1.0f / 3.0f;
+            p[1] = float(j) / (n - 1);
+        }
+    std::vector<float> c(std::size_t(size) * size, 0.0f);
+    const float spacing = float(size) / (n - 1);
+    for (const GatherShift& shift : gatherPasses(false, true, size))
+        meshPhotons(photons.data(), n, 1.0f, c.data(), size, shift, spacing);
+    for (int j = 0; j < size; ++j)
+        for (int i = 0; i < size; ++i) ASSERT_NEAR(c[j * size + i], 1.0f, 1e-4f) << i << ", " << j;
+}

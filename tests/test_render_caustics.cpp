@@ -4,6 +4,7 @@
 // three gather paths must agree; no target may hold NaN/Inf, whatever the sun's elevation. Each
 // for both methods: photon splatting and the area-ratio mesh (RenderCausticsMethod).
 #include "GLHarness.h"
+#include "WarnCapture.h"
 #include <osgWater/WaterNode>
 #include <osgWater/Optics>
 #include <osgWater/WaterTypes>
@@ -505,6 +506,78 @@ TEST(RenderCaustics, TheSunReflectedOffFlatWaterLightsAWallAboveItByTheReflected
     s->setReflectiveCaustics(false);
     EXPECT_NEAR(wallColour(), std::cos(e), 0.01) << "off: the direct sun alone";
     EXPECT_EQ(sc.water->getReflectedCausticsCamera(), nullptr);
+}
+
+TEST_P(RenderCausticsMethod, TiledTheCausticsOfOneTileRepeatWhatTheWholeWaterGives)
+{
+    // flat water: the tile holds the transmitted irradiance everywhere, edges included (they wrap)
+    const osg::Vec3 sun(0.3f, 0.2f, 0.93f);
+    osg::Vec3 L = sun;
+    L.normalize();
+    {
+        CausticsScene sc(20.0f, 32, 128, sun, -2.0f);
+        REQUIRE_GL(sc.h);
+        sc.water->getSettings()->setCausticsMethod(GetParam());
+        sc.water->getSettings()->setCausticsTileSize(4.0f);
+        osg::ref_ptr<osg::Image> img = sc.render();
+        ASSERT_TRUE(img.valid());
+        EXPECT_TRUE(sc.water->getCausticsCamera()->getLighting().tiled);
+        const double expected = flatIrradiance(L.z(), 2.0);
+        for (int j = 0; j < img->t(); ++j)
+            for (int i = 0; i < img->s(); ++i)
+                ASSERT_NEAR(value(img.get(), i, j), expected, 0.02 * expected) << i << ", " << j;
+    }
+    // waves that repeat over the 4 m tile (two cycles along x, one along y): the tile's caustics,
+    // wrapped, against the whole water's at the same bed points (blocks of 2 x 2 texels, 0.25 m)
+    const float size = 8.0f, tile = 4.0f;
+    std::vector<Wave> waves = { makeWave(1, 0, 2.0f, 0.02f), makeWave(0, 1, 4.0f, 0.03f) };
+    osg::ref_ptr<osg::Image> whole, tiled;
+    osg::Matrixd wholeToSun, localToTile;
+    for (bool tiling : { false, true }) {
+        CausticsScene sc(size, tiling ? 32 : 64, tiling ? 128 : 256, sun, -2.0f);
+        REQUIRE_GL(sc.h);
+        sc.water->getSurface()->setWaves(waves);
+        sc.water->getSettings()->setCausticsMethod(GetParam());
+        sc.water->getSettings()->setCausticsFocused(false);
+        sc.water->getSettings()->setCausticsTileSize(tiling ? tile : 0.0f);
+        (tiling ? tiled : whole) = sc.render();
+        ASSERT_TRUE((tiling ? tiled : whole).valid());
+        const CausticsLighting& l = sc.water->getCausticsCamera()->getLighting();
+        (tiling ? localToTile : wholeToSun) = tiling ? l.localToTile : l.localToSun;
+    }
+    const osg::Matrixd tileToLocal = osg::Matrixd::inverse(localToTile);
+    double sum = 0, worst = 0;
+    int blocks = 0;
+    for (int bj = 0; bj < tiled->t(); bj += 2)
+        for (int bi = 0; bi < tiled->s(); bi += 2) {
+            double t = 0, w = 0;
+            for (int j = bj; j < bj + 2; ++j)
+                for (int i = bi; i < bi + 2; ++i) {
+                    t += value(tiled.get(), i, j) / 4;
+                    // the bed point under this tile texel, in the whole water's texture
+                    const osg::Vec3d p = osg::Vec3d((i + 0.5) / tiled->s(), (j + 0.5) / tiled->t(), 0.0) * tileToLocal;
+                    const osg::Vec3d q = osg::Vec3d(p.x(), p.y(), -2.0) * wholeToSun;
+                    w += value(whole.get(), int(q.x() * whole->s()), int(q.y() * whole->t())) / 4;
+                }
+            sum += w;
+            worst = std::max(worst, std::fabs(t - w));
+            ++blocks;
+        }
+    EXPECT_LE(worst, 0.05 * sum / blocks) << "mean " << sum / blocks; // measured: 2.7%
+}
+
+TEST(RenderCaustics, TiledOverWavesThatDoNotRepeatOverTheTileItSaysSo)
+{
+    CausticsScene sc(20.0f, 32, 128, osg::Vec3(0, 0, 1), -2.0f);
+    REQUIRE_GL(sc.h);
+    sc.water->getSurface()->setWaves({ makeWave(1, 0, 1.7f, 0.02f) });
+    sc.water->getSettings()->setCausticsTileSize(4.0f);
+    ScopedWarnCapture capture;
+    sc.render();
+    sc.render();
+    const std::string said = capture.str();
+    EXPECT_NE(said.find("do not repeat over the caustics tile"), std::string::npos) << said;
+    EXPECT_EQ(said.find("do not repeat"), said.rfind("do not repeat")) << "said once";
 }
 
 TEST(RenderCaustics, UnderAPerChannelWaterEachChannelOfTheSunFadesByItsOwnExtinction)

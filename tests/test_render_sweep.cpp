@@ -74,6 +74,7 @@ struct Group {
     int gather;       // -1 caustics off, else a CausticsGather
     bool areaMesh;    // the caustics by the area-ratio mesh (else photon splatting), supersampled every other time
     bool reflective;  // reflective caustics too
+    float tile;       // tileable caustics' tile (0: off)
     int textureSize, photonGrid, viewport;
     bool rotation, glow, reflection, refraction;
     DebugOutput debug;
@@ -115,6 +116,7 @@ std::vector<Group> groups()
         x.gather = pick(gathers, i / 2);
         x.areaMesh = i % 4 >= 2; // with every gather (which changes every other group)
         x.reflective = i % 5 == 2;
+        x.tile = i % 7 == 4 ? 3.0f : 0.0f;
         // huge targets (8192: clamped to 4096 by the settings, then to the context) cost seconds a
         // frame on a software rasteriser: one group each, the others alternate tiny and small
         x.textureSize = i == 10 ? 8192 : (i % 2 ? 16 : 64);
@@ -167,7 +169,7 @@ std::string describe(const Group& g, const Config& c)
     s << sceneName(g.scene) << ", "
       << (g.steps ? "iterative " + std::to_string(g.steps) : std::string(g.planeLookups ? "plane" : "one-step"))
       << (g.planeLookups ? ", plane reflection" : "")
-      << ", fresnel " << g.fresnel << ", underwater " << g.underwater << ", gather " << g.gather << (g.areaMesh ? " (mesh)" : "") << (g.reflective ? " (reflective)" : "") << ", textures "
+      << ", fresnel " << g.fresnel << ", underwater " << g.underwater << ", gather " << g.gather << (g.areaMesh ? " (mesh)" : "") << (g.reflective ? " (reflective)" : "") << (g.tile > 0.0f ? " (tiled)" : "") << ", textures "
       << g.textureSize << ", photons " << g.photonGrid << ", viewport " << g.viewport << ", rotation " << g.rotation
       << ", glow " << g.glow << ", debug " << g.debug << "; eye height " << c.eyeHeight << ", pitch " << c.pitch
       << ", yaw " << c.yaw << ", sun " << c.sunElevation << ", IOR " << c.ior << ", t " << c.time << ", amplitude "
@@ -189,6 +191,7 @@ void apply(WaterNode* water, const Group& g)
     s->setCausticsMethod(g.areaMesh ? WaterSettings::CAUSTICS_AREA_MESH : WaterSettings::CAUSTICS_PHOTONS);
     s->setCausticsSupersampling(g.areaMesh && g.steps % 2 == 1);
     s->setReflectiveCaustics(g.reflective);
+    s->setCausticsTileSize(g.tile);
     s->setReflectionTextureSize(g.textureSize);
     s->setRefractionTextureSize(g.textureSize);
     s->setCausticsResolution(g.textureSize);

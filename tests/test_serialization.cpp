@@ -55,6 +55,7 @@ osg::ref_ptr<WaterNode> pond()
     s->setCausticsMethod(WaterSettings::CAUSTICS_AREA_MESH);
     s->setCausticsSupersampling(true);
     s->setReflectiveCaustics(true);
+    s->setCausticsTileSize(12.5f);
     s->setEnvironmentMapEnabled(true);
     s->setEnvironmentMapSize(128);
     s->setUnderwaterModel(WaterSettings::UNDERWATER_THESIS);
@@ -114,6 +115,7 @@ TEST(Serialization, ExpectedTextReadsBackIntoTheSameNode)
     EXPECT_EQ(s->getCausticsMethod(), WaterSettings::CAUSTICS_AREA_MESH);
     EXPECT_TRUE(s->getCausticsSupersampling());
     EXPECT_TRUE(s->getReflectiveCaustics());
+    EXPECT_FLOAT_EQ(s->getCausticsTileSize(), 12.5f);
     EXPECT_TRUE(s->getEnvironmentMapEnabled());
     EXPECT_EQ(s->getEnvironmentMapSize(), 128);
     EXPECT_EQ(s->getCausticsResolution(), 256); // absent: default

@@ -186,3 +186,49 @@ TEST(Surface, AtTenMillionSecondsTheSurfaceMatchesALongDoubleEvaluation)
                 EXPECT_NEAR(s->height(x, y, t), double(h), 1.0e-5) << "well inside the 1 mm bound";
             }
 }
+
+TEST(Surface, WavesTileOverASquareWhenEachRunsWholeCyclesAlongBothAxes)
+{
+    const double tile = 4.0;
+    auto wave = [](float dx, float dy, float wavelength) {
+        Wave w;
+        w.direction.set(dx, dy);
+        w.wavelength = wavelength;
+        w.amplitude = 0.1f;
+        return w;
+    };
+    EXPECT_TRUE(WaterSurface::wavesTileOver({ wave(1, 0, 2.0f) }, tile)) << "two cycles along x";
+    EXPECT_TRUE(WaterSurface::wavesTileOver({ wave(0.6f, 0.8f, 0.8f) }, tile)) << "3 along x, 4 along y";
+    EXPECT_TRUE(WaterSurface::wavesTileOver({ wave(1, 0, 2.0f), wave(0, -1, 4.0f / 3.0f) }, tile));
+    EXPECT_FALSE(WaterSurface::wavesTileOver({ wave(1, 0, 1.7f) }, tile)) << "2.35 cycles";
+    EXPECT_FALSE(WaterSurface::wavesTileOver({ wave(0.6f, 0.8f, 2.0f) }, tile)) << "1.2 and 1.6 cycles";
+    EXPECT_FALSE(WaterSurface::wavesTileOver({ wave(1, 0, 2.0f) }, 0.0)) << "no tile";
+    Wave still = wave(1, 0, 1.7f);
+    still.amplitude = 0.0f;
+    EXPECT_TRUE(WaterSurface::wavesTileOver({ still }, tile)) << "a still wave repeats over anything";
+}
+
+TEST(Surface, WavesSnappedToATileRepeatOverItAndStayClose)
+{
+    const double tile = 8.0;
+    const std::vector<Wave> lake = defaultWaves(); // none of which repeats over 8 m
+    ASSERT_FALSE(WaterSurface::wavesTileOver(lake, tile));
+    const std::vector<Wave> snapped = WaterSurface::wavesSnappedToTile(lake, tile);
+    ASSERT_EQ(snapped.size(), lake.size());
+    EXPECT_TRUE(WaterSurface::wavesTileOver(snapped, tile));
+    for (size_t i = 0; i < lake.size(); ++i) {
+        const osg::Vec2 k0 = lake[i].direction * float(1.0 / lake[i].wavelength);
+        const osg::Vec2 k1 = snapped[i].direction * float(1.0 / snapped[i].wavelength);
+        // rounded to the lattice of 1 / 8 m cycles: at most half a step off along each axis
+        EXPECT_LE(std::fabs(k1.x() - k0.x()), 0.5 / tile + 1e-6) << i;
+        EXPECT_LE(std::fabs(k1.y() - k0.y()), 0.5 / tile + 1e-6) << i;
+        EXPECT_NEAR(snapped[i].direction.length(), 1.0f, 1e-6f);
+        EXPECT_EQ(snapped[i].amplitude, lake[i].amplitude);
+        EXPECT_EQ(snapped[i].phase, lake[i].phase);
+    }
+    Wave longWave = lake[0];
+    longWave.wavelength = 50.0f; // longer than the tile: one cycle over it
+    const Wave s = WaterSurface::wavesSnappedToTile({ longWave }, tile)[0];
+    EXPECT_NEAR(s.wavelength, 8.0f, 1e-5f);
+    EXPECT_NEAR(s.direction.x(), 1.0f, 1e-6f);
+}

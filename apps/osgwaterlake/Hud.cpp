@@ -30,7 +30,7 @@ std::string describeCaustics(const osgWater::WaterNode& water)
     if (!s.getCausticsEnabled()) return "off";
     std::ostringstream o;
     o << WaterSettings::causticsMethodName(s.getCausticsMethod()) << (s.getCausticsSupersampling() ? " 2x2" : "")
-      << (s.getReflectiveCaustics() ? " + reflective" : "") << ", "
+      << (s.getCausticsTileSize() > 0.0f ? " tiled" : "") << (s.getReflectiveCaustics() ? " + reflective" : "") << ", "
       << osgWater::CausticsCamera::gatherName(water.getActiveCausticsGather())
       << (s.getCausticsGather() != WaterSettings::GATHER_AUTO ? ""
           : water.getCausticsCamera() && water.getCausticsCamera()->isAutoGatherSettled() ? " (auto)" : " (auto, timing)") << " " << s.getCausticsResolution()

@@ -69,6 +69,7 @@ void LakeOptions::describe(osg::ApplicationUsage& u)
     u.addCommandLineOption("--gather <auto|copy|texture|cpu>", "Caustics photon gather: points from a copied vertex buffer, points reading the photon texture, CPU");
     u.addCommandLineOption("--caustics <photons|mesh>", "Caustics method: photon splatting (thesis) or the area-ratio mesh (DeepWater)");
     u.addCommandLineOption("--supersample", "Caustics: the gather drawn four times, jittered by a quarter texel (2x2 supersampling)");
+    u.addCommandLineOption("--caustics-tile <metres>", "Tileable caustics over tiles of this side (the waves moved to the nearest that repeat over it)");
     u.addCommandLineOption("--reflective-caustics", "The sun reflected off the water lights what stands above it");
     u.addCommandLineOption("--caustics-size <n>", "Caustics texture size (default 256)");
     u.addCommandLineOption("--photons <n>", "Photons per side of the photon grid (default 512)");
@@ -147,6 +148,7 @@ bool LakeOptions::read(osg::ArgumentParser& args)
                         &WaterSettings::setCausticsMethod, _setters))
         return false;
     if (args.read("--supersample")) _setters.push_back([](WaterSettings& w) { w.setCausticsSupersampling(true); });
+    args.read("--caustics-tile", causticsTile);
     if (args.read("--reflective-caustics")) _setters.push_back([](WaterSettings& w) { w.setReflectiveCaustics(true); });
     if (args.read("--caustics-size", n)) _setters.push_back([n](WaterSettings& w) { w.setCausticsResolution(n); });
     if (args.read("--photons", n)) _setters.push_back([n](WaterSettings& w) { w.setPhotonGridSize(n); });
@@ -173,6 +175,15 @@ void LakeOptions::apply(osgWater::WaterNode& water) const
     if (const osgWater::WaterType* type = osgWater::findWaterType(waterType)) osgWater::applyWaterType(s, *type);
     else s.setWaterModel(WaterSettings::WATER_THESIS);
     for (const auto& set : _setters) set(s);
+    if (causticsTile > 0.0) {
+        s.setCausticsTileSize(float(causticsTile));
+        osgWater::WaterSurface& surface = *water.getSurface();
+        if (!osgWater::WaterSurface::wavesTileOver(surface.getWaves(), causticsTile)) {
+            surface.setWaves(osgWater::WaterSurface::wavesSnappedToTile(surface.getWaves(), causticsTile));
+            std::cout << "caustics tile " << causticsTile << " m: the waves moved to the nearest that repeat over it"
+                      << std::endl;
+        }
+    }
 }
 
 std::string findSceneFile(const std::string& name)

@@ -14,6 +14,7 @@ struct LakeOptions {
     osg::Vec3d underwaterEye{ 0, -26, -2 }, underwaterCenter{ 0, -33, 1 };
     bool underwater = false;
     double time = 10.0;            // simulation time of the first frame
+    double causticsTile = 0.0;     // tileable caustics: the tile's side, the waves snapped to it (0: off)
     bool headless = false;
     int frames = 60;
     bool compare = true;           // headless: also time the scene without water
