@@ -147,6 +147,13 @@ double CausticsCamera::focusRatio(const Frame& f)
     return whole > 0.0 ? std::min(1.0, side(lightBox(f, true)) / whole) : 1.0;
 }
 
+double CausticsCamera::tileRatio(const Frame& f)
+{
+    const osg::BoundingBox whole = lightBox(f, false);
+    const double side = std::max(whole.xMax() - whole.xMin(), whole.yMax() - whole.yMin());
+    return side > 0.0 && f.tile > 0.0 ? std::min(1.0, f.tile / side) : 1.0;
+}
+
 void CausticsCamera::update(const Frame& f)
 {
     _depthDrawn = false; // a new frame
@@ -199,7 +206,8 @@ void CausticsCamera::update(const Frame& f)
     _lighting.localToSun = view * proj * clipToTexture(); // reflected: a fragment mirrored first
     _lighting.intensity = f.settings->getCausticsIntensity() * _gather->getValueScale();
     // the photons' green-channel fade is the others' too in the air
-    _lighting.channelExtinction = _reflected ? osg::Vec3f() : channelExtinction(*f.settings);
+    // (a tile's photons carry no fade: the fragment's depth gives all of it)
+    _lighting.channelExtinction = _reflected ? osg::Vec3f() : channelExtinction(*f.settings, _tiled);
     _lighting.depthBias.set(float(1.5 * texel / _window.z()), float(texel / _window.z()));
 
     const osg::Texture::FilterMode filter = f.settings->getCausticsFiltering() ? osg::Texture::LINEAR

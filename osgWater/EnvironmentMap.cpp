@@ -35,6 +35,14 @@ osg::Matrixd EnvironmentMap::faceView(int face, const osg::Vec3d& centre)
     return osg::Matrixd::lookAt(centre, centre + axis[face], up[face]);
 }
 
+void EnvironmentMap::setBackground(const osg::Vec4& color)
+{
+    if (color == _clearColor) return;
+    _clearColor = color;
+    for (auto& f : _faces) f->setClearColor(color);
+    ++_version;
+}
+
 void EnvironmentMap::aim(const osg::Vec3d& centre, const osg::BoundingSphere& scene, const SceneLighting& lighting)
 {
     // the faces reach the far side of the scene's bound

@@ -44,8 +44,7 @@ void PhotonCamera::setSun(osg::Node* surface, const osg::Matrixd& view, const os
     if (mirror) {
         // the mirror in the sun's eye space: back to the water's frame, mirrored, forth again
         const osg::Matrixf mirrorEye(osg::Matrixd::inverse(view) * *mirror * view);
-        if (osg::Uniform* u = _photonState->getUniform("osgWater_MirrorEye")) u->set(mirrorEye);
-        else _photonState->addUniform(new osg::Uniform("osgWater_MirrorEye", mirrorEye));
+        setOrAddUniform(_photonState.get(), "osgWater_MirrorEye", mirrorEye);
     }
     _surface = surface;
     _draw->setNode(0, surface);
@@ -54,14 +53,6 @@ void PhotonCamera::setSun(osg::Node* surface, const osg::Matrixd& view, const os
     _photonState->getUniform("osgWater_RefractionProj")->set(osg::Matrixf(projection));
     _photonState->getUniform("osgWater_RefractionInvProj")->set(osg::Matrixf(osg::Matrixd::inverse(projection)));
     _photonState->setTextureAttribute(UNIT_REFRACTION_DEPTH, sunDepth);
-}
-
-namespace {
-template <class T> void setPhotonUniform(osg::StateSet* ss, const char* name, const T& value)
-{
-    if (osg::Uniform* u = ss->getUniform(name)) u->set(value);
-    else ss->addUniform(new osg::Uniform(name, value));
-}
 }
 
 void PhotonCamera::setTile(osg::Node* surface, const osg::Matrixd& view, const osg::Matrixd& projection,
@@ -76,7 +67,7 @@ void PhotonCamera::setTile(osg::Node* surface, const osg::Matrixd& view, const o
     setDefineIf(ss, "OSGWATER_TILED_PHOTONS", true);
     osg::Vec3f sun = osg::Matrixd::transform3x3(towardsSun, view);
     sun.normalize();
-    setPhotonUniform(ss, "osgWater_TileSun", sun);
-    setPhotonUniform(ss, "osgWater_TileBed", osg::Vec4f(planeToEye(osg::Vec4d(0.0, 0.0, 1.0, -bedZ), view)));
-    setPhotonUniform(ss, "osgWater_EyeToTile", osg::Matrixf(osg::Matrixd::inverse(view) * localToTile));
+    setOrAddUniform(ss, "osgWater_TileSun", sun);
+    setOrAddUniform(ss, "osgWater_TileBed", osg::Vec4f(planeToEye(osg::Vec4d(0.0, 0.0, 1.0, -bedZ), view)));
+    setOrAddUniform(ss, "osgWater_EyeToTile", osg::Matrixf(osg::Matrixd::inverse(view) * localToTile));
 }

@@ -3,6 +3,7 @@
 #include <osgWater/Shaders>
 #include <osgWater/PassCamera>
 #include <osg/BlendFunc>
+#include <osg/buffered_value>
 #include <osg/Geometry>
 #include <osg/GLExtensions>
 #include <osg/Point>
@@ -60,7 +61,7 @@ public:
         osg::GLExtensions* ext = state.get<osg::GLExtensions>();
         // the supersampled gather draws the same points four times: one copy a frame is enough
         const unsigned int frame = state.getFrameStamp() ? state.getFrameStamp()->getFrameNumber() : 0u;
-        unsigned int& copied = _copiedFrame[state.getContextID()];
+        unsigned int& copied = _copiedFrame[state.getContextID()]; // sized for every context up front
         if (glbo && ext && (copied != frame || frame == 0u)) {
             copied = frame;
             if (glbo->isDirty()) glbo->compileBuffer(); // allocates it once
@@ -77,7 +78,7 @@ public:
 
 private:
     osg::ref_ptr<osg::Texture2D> _photons;
-    mutable std::map<unsigned int, unsigned int> _copiedFrame; // context -> frame copied last (draw threads own a context each)
+    mutable osg::buffered_value<unsigned int> _copiedFrame; // per context: the frame copied last
 };
 
 // GATHER_CPU: thesis §8.1's CPU approach.

@@ -357,6 +357,7 @@ WaterNode::ViewFrame WaterNode::gatherFacts(osgUtil::CullVisitor& cv)
     {
         OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_environmentMutex);
         f.environment = _environment.valid();
+        if (f.environment) _environment->setBackground(ctx.clearColor); // the views' background
         f.environmentStale = f.environment && _environment->stale(v.contextID);
     }
 
@@ -582,8 +583,9 @@ void WaterNode::prepareCaustics(ViewFrame& v)
             // photons per texel exactly (a ratio off by a rounding makes a moire of 3s and 4s)
             const int setResolution = fitTexture("causticsResolution", s.getCausticsResolution(), v.support);
             const int setGrid = fitTexture("photonGridSize", s.getPhotonGridSize(), v.support);
-            // (a tile is its own window: not focused)
-            const int resolution = f.tile > 0.0 ? setResolution : focusedCount(setResolution, CausticsCamera::focusRatio(f));
+            // (a tile keeps the spacing too: its counts shrink with its side)
+            const int resolution = focusedCount(setResolution, f.tile > 0.0 ? CausticsCamera::tileRatio(f)
+                                                                            : CausticsCamera::focusRatio(f));
             const int grid = std::max(1, int(std::lround(double(setGrid) * resolution / setResolution)));
             if (!_caustics.valid() || !_caustics->matches(resolution, grid, v.support.floatTargets))
             {

@@ -11,7 +11,8 @@
 // OSGWATER_TILED_PHOTONS (tileable caustics): the camera looks straight down on one tile of the
 // surface; the refracted ray meets a flat bed (a plane) and the photon is (u, v) its hit in tile
 // units (beyond [0, 1] when it lands in a neighbouring tile), its energy the share of the sun on
-// this texel's piece of surface: (1 - F) exp(-k d) (N.L) / (N.z L.z), per area seen from the sun.
+// this texel's piece of surface: (1 - F) (N.L) / (N.z L.z), per area seen from the sun, not yet
+// faded (the scene program fades it by each fragment's depth).
 #define OSGWATER_ORTHO_DEPTH 1
 #pragma include "waves.glsl"
 #pragma include "optics.glsl"
@@ -54,7 +55,9 @@ void main()
         float F = owFresnel(cosL, osgWater_IOR.x, osgWater_IOR.y, osgWater_FresnelQ);
         vec2 tc = (osgWater_EyeToTile * vec4(vEye + d * T, 1.0)).xy;
         float share = cosL / max(N.z * L.z, 1e-4); // this texel's surface over its sun-facing area
-        photon = vec4(tc, (1.0 - F) * exp(-osgWater_PhotonExtinction * d) * share, 1.0);
+        // no fade here: the bed under a tile lies at any depth, and the scene program fades the
+        // light by the fragment's own (CausticsLighting::channelExtinction)
+        photon = vec4(tc, (1.0 - F) * share, 1.0);
     }
 #else
     const vec3 L = vec3(0.0, 0.0, 1.0);  // towards the sun, in the sun camera's eye space

@@ -158,6 +158,37 @@ double flatIrradiance(double cosL, double H, double k = kK)
 }
 
 
+// Every gather path's caustics against the CPU's (the mirror), within 2% of the CPU's largest
+// value; returns the CPU's.
+osg::ref_ptr<osg::Image> expectGatherPathsAgree(CausticsScene& sc)
+{
+    osg::ref_ptr<osg::Image> ref;
+    double refMax = 0;
+    for (WaterSettings::CausticsGather g : { WaterSettings::GATHER_CPU, WaterSettings::GATHER_POINTS_COPY,
+                                             WaterSettings::GATHER_POINTS_TEXTURE }) {
+        sc.setGather(g);
+        osg::ref_ptr<osg::Image> img = sc.render();
+        if (!img.valid()) {
+            ADD_FAILURE() << "no caustics with " << CausticsCamera::gatherName(g);
+            return ref;
+        }
+        EXPECT_EQ(sc.water->getActiveCausticsGather(), g);
+        if (!ref.valid()) {
+            ref = img;
+            for (int j = 0; j < img->t(); ++j)
+                for (int i = 0; i < img->s(); ++i) refMax = std::max(refMax, value(img.get(), i, j));
+            EXPECT_GT(refMax, 0.1);
+            continue;
+        }
+        double worst = 0;
+        for (int j = 0; j < img->t(); ++j)
+            for (int i = 0; i < img->s(); ++i)
+                worst = std::max(worst, std::fabs(value(img.get(), i, j) - value(ref.get(), i, j)));
+        EXPECT_LE(worst, 0.02 * refMax) << CausticsCamera::gatherName(g) << " vs CPU";
+    }
+    return ref;
+}
+
 class RenderCausticsMethod : public testing::TestWithParam<WaterSettings::CausticsMethod> {};
 
 }
@@ -282,28 +313,14 @@ TEST_P(RenderCausticsMethod, SupersampledTheGatherKeepsTheIrradianceAndTheGpuPat
     REQUIRE_GL(sc.h);
     sc.water->getSettings()->setCausticsMethod(GetParam());
     sc.water->getSettings()->setCausticsSupersampling(true);
-    osg::ref_ptr<osg::Image> ref, single;
+    const osg::ref_ptr<osg::Image> ref = expectGatherPathsAgree(sc);
+    ASSERT_TRUE(ref.valid());
     double refMax = 0;
-    for (WaterSettings::CausticsGather g : { WaterSettings::GATHER_CPU, WaterSettings::GATHER_POINTS_COPY,
-                                             WaterSettings::GATHER_POINTS_TEXTURE }) {
-        sc.setGather(g);
-        osg::ref_ptr<osg::Image> img = sc.render();
-        ASSERT_TRUE(img.valid());
-        if (!ref.valid()) {
-            ref = img;
-            for (int j = 0; j < img->t(); ++j)
-                for (int i = 0; i < img->s(); ++i) refMax = std::max(refMax, value(img.get(), i, j));
-            continue;
-        }
-        double worst = 0;
-        for (int j = 0; j < img->t(); ++j)
-            for (int i = 0; i < img->s(); ++i)
-                worst = std::max(worst, std::fabs(value(img.get(), i, j) - value(ref.get(), i, j)));
-        EXPECT_LE(worst, 0.02 * refMax) << CausticsCamera::gatherName(g) << " vs CPU";
-    }
+    for (int j = 0; j < ref->t(); ++j)
+        for (int i = 0; i < ref->s(); ++i) refMax = std::max(refMax, value(ref.get(), i, j));
     // and the four passes are not one: the single pass differs from them somewhere
     sc.water->getSettings()->setCausticsSupersampling(false);
-    single = sc.render();
+    const osg::ref_ptr<osg::Image> single = sc.render();
     double differ = 0;
     for (int j = 0; j < single->t(); ++j)
         for (int i = 0; i < single->s(); ++i)
@@ -361,27 +378,7 @@ TEST_P(RenderCausticsMethod, TheThreeGatherPathsAgree)
     CausticsScene sc(size, 64, 128, osg::Vec3(0.2f, 0.1f, 0.97f), -2.0f, bumpMesh(size, 120, 0.5f, 0.5f, 0.25f, 0.5f));
     REQUIRE_GL(sc.h);
     sc.water->getSettings()->setCausticsMethod(GetParam());
-    osg::ref_ptr<osg::Image> ref;
-    double refMax = 0;
-    for (WaterSettings::CausticsGather g : { WaterSettings::GATHER_CPU, WaterSettings::GATHER_POINTS_COPY,
-                                             WaterSettings::GATHER_POINTS_TEXTURE }) {
-        sc.setGather(g);
-        osg::ref_ptr<osg::Image> img = sc.render();
-        ASSERT_TRUE(img.valid());
-        EXPECT_EQ(sc.water->getActiveCausticsGather(), g);
-        if (!ref.valid()) {
-            ref = img;
-            for (int j = 0; j < img->t(); ++j)
-                for (int i = 0; i < img->s(); ++i) refMax = std::max(refMax, value(img.get(), i, j));
-            ASSERT_GT(refMax, 0.1);
-            continue;
-        }
-        double worst = 0;
-        for (int j = 0; j < img->t(); ++j)
-            for (int i = 0; i < img->s(); ++i)
-                worst = std::max(worst, std::fabs(value(img.get(), i, j) - value(ref.get(), i, j)));
-        EXPECT_LE(worst, 0.02 * refMax) << CausticsCamera::gatherName(g) << " vs CPU";
-    }
+    expectGatherPathsAgree(sc);
 }
 
 TEST_P(RenderCausticsMethod, WithoutFloatTargetsTheCpuFallbackGivesTheSameCaustics)
@@ -510,10 +507,13 @@ TEST(RenderCaustics, TheSunReflectedOffFlatWaterLightsAWallAboveItByTheReflected
 
 TEST_P(RenderCausticsMethod, TiledTheCausticsOfOneTileRepeatWhatTheWholeWaterGives)
 {
-    // flat water: the tile holds the transmitted irradiance everywhere, edges included (they wrap)
+    // flat water: the tile holds the transmitted share 1 - F everywhere, edges included (they
+    // wrap); the bed under it receives that faded by its own depth: the analytic irradiance
     const osg::Vec3 sun(0.3f, 0.2f, 0.93f);
     osg::Vec3 L = sun;
     L.normalize();
+    const double transmitted = 1.0 - optics::fresnelSchlick(L.z(), optics::normalReflectance(1.0f, 1.333f), 5.0f);
+    const double fade = flatIrradiance(L.z(), 2.0) / transmitted; // over the 2 m the sun's path takes
     {
         CausticsScene sc(20.0f, 32, 128, sun, -2.0f);
         REQUIRE_GL(sc.h);
@@ -522,13 +522,17 @@ TEST_P(RenderCausticsMethod, TiledTheCausticsOfOneTileRepeatWhatTheWholeWaterGiv
         osg::ref_ptr<osg::Image> img = sc.render();
         ASSERT_TRUE(img.valid());
         EXPECT_TRUE(sc.water->getCausticsCamera()->getLighting().tiled);
-        const double expected = flatIrradiance(L.z(), 2.0);
         for (int j = 0; j < img->t(); ++j)
             for (int i = 0; i < img->s(); ++i)
-                ASSERT_NEAR(value(img.get(), i, j), expected, 0.02 * expected) << i << ", " << j;
+                ASSERT_NEAR(value(img.get(), i, j), transmitted, 0.02 * transmitted) << i << ", " << j;
+        sc.lightTheBed(20.0f);
+        const double ndl = L.z();
+        for (const osg::Vec3d p : { osg::Vec3d(-3, 1, -2), osg::Vec3d(2.5, -1.5, -2) })
+            EXPECT_NEAR(sc.refracted(p).x(), ndl * flatIrradiance(ndl, 2.0), 0.01) << p;
     }
     // waves that repeat over the 4 m tile (two cycles along x, one along y): the tile's caustics,
-    // wrapped, against the whole water's at the same bed points (blocks of 2 x 2 texels, 0.25 m)
+    // wrapped and faded by the bed's depth, against the whole water's at the same bed points
+    // (blocks of 2 x 2 texels, 0.25 m)
     const float size = 8.0f, tile = 4.0f;
     std::vector<Wave> waves = { makeWave(1, 0, 2.0f, 0.02f), makeWave(0, 1, 4.0f, 0.03f) };
     osg::ref_ptr<osg::Image> whole, tiled;
@@ -553,7 +557,7 @@ TEST_P(RenderCausticsMethod, TiledTheCausticsOfOneTileRepeatWhatTheWholeWaterGiv
             double t = 0, w = 0;
             for (int j = bj; j < bj + 2; ++j)
                 for (int i = bi; i < bi + 2; ++i) {
-                    t += value(tiled.get(), i, j) / 4;
+                    t += fade * value(tiled.get(), i, j) / 4;
                     // the bed point under this tile texel, in the whole water's texture
                     const osg::Vec3d p = osg::Vec3d((i + 0.5) / tiled->s(), (j + 0.5) / tiled->t(), 0.0) * tileToLocal;
                     const osg::Vec3d q = osg::Vec3d(p.x(), p.y(), -2.0) * wholeToSun;

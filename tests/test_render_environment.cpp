@@ -45,6 +45,13 @@ osg::TextureCubeMap* solidFaces()
     return cube;
 }
 
+// a red wall 80 m along +x, only on the +y side and only above the water
+osg::Geode* redWall()
+{
+    return emissiveQuad(osg::Vec3(80, 0, 0), osg::Vec3(80, 40, 0), osg::Vec3(80, 40, 40), osg::Vec3(80, 0, 40),
+                        osg::Vec4(1, 0, 0, 1));
+}
+
 osg::Vec3 centrePixel(Harness& h)
 {
     h.frame(1.0);
@@ -86,10 +93,8 @@ TEST(RenderEnvironment, TheDrawnMapShowsWhatStandsAboveTheWaterWhereItStands)
     Harness h(64, 64);
     REQUIRE_GL(h);
     osg::ref_ptr<WaterNode> water = mirrorOnlyWater(100.0f);
-    // a red wall 80 m along +x, only on the +y side and only above the water: a face drawn
-    // mirrored left-right or upside down shows it on the wrong side, or not at all
-    water->addChild(emissiveQuad(osg::Vec3(80, 0, 0), osg::Vec3(80, 40, 0), osg::Vec3(80, 40, 40), osg::Vec3(80, 0, 40),
-                                 osg::Vec4(1, 0, 0, 1)));
+    // a face drawn mirrored left-right or upside down shows the wall on the wrong side, or not at all
+    water->addChild(redWall());
     h.setScene(water.get());
     // the centre ray meets the water at (10, +-2.5, 0) and leaves along (10, +-2.5, 1): towards
     // (80, +-20, 7), on the wall or beside it
@@ -114,8 +119,7 @@ TEST(RenderEnvironment, TheDrawnMapIsDrawnOnceThenOnlyWhenAskedOrMoved)
     Harness h(64, 64);
     REQUIRE_GL(h);
     osg::ref_ptr<WaterNode> water = mirrorOnlyWater(100.0f);
-    water->addChild(emissiveQuad(osg::Vec3(80, 0, 0), osg::Vec3(80, 40, 0), osg::Vec3(80, 40, 40), osg::Vec3(80, 0, 40),
-                                 osg::Vec4(1, 0, 0, 1)));
+    water->addChild(redWall());
     h.setScene(water.get());
     h.lookAt(osg::Vec3d(0, 0, 1), osg::Vec3d(10, 2.5, 0));
     auto drawn = [&](double t) {

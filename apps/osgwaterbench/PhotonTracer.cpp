@@ -2,6 +2,7 @@
 #include <osgWater/WaterSurface>
 #include <glm/geometric.hpp>
 #include <atomic>
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <mutex>
@@ -87,6 +88,44 @@ PhotonImage tracePhotons(const RayCaster& scene, const RayCaster& water, const o
     for (unsigned i = 0; i < threads; ++i) pool.emplace_back(work, side * i / threads, side * (i + 1) / threads, i);
     for (std::thread& th : pool) th.join();
     if (s.progress) progressBar(side, side, side);
+    return out;
+}
+
+osg::ref_ptr<osg::Image> tileSeenFromTheSun(const osg::Image* tile, const RayCaster& scene,
+                                            const osgWater::CausticsLighting& lighting, const osg::Vec3d& towardsSun,
+                                            double level, int resolution)
+{
+    osg::ref_ptr<osg::Image> out = new osg::Image;
+    out->allocateImage(resolution, resolution, 1, GL_RGBA, GL_FLOAT);
+    std::fill_n(reinterpret_cast<float*>(out->data()), size_t(resolution) * resolution * 4, 0.0f);
+    const osg::Matrixd sunToLocal = osg::Matrixd::inverse(lighting.localToSun);
+    const glm::dvec3 L = glm::normalize(glm::dvec3(towardsSun.x(), towardsSun.y(), towardsSun.z()));
+    const int n = tile->s();
+    auto texel = [&](int i, int j) {
+        i = ((i % n) + n) % n; // the tile repeats
+        j = ((j % n) + n) % n;
+        return reinterpret_cast<const float*>(tile->data(i, j))[0];
+    };
+    for (int j = 0; j < resolution; ++j)
+        for (int i = 0; i < resolution; ++i) {
+            const osg::Vec3d o = osg::Vec3d((i + 0.5) / resolution, (j + 0.5) / resolution, 0.0) * sunToLocal;
+            if (!(L.z > 0.0) || o.z() < level) continue;
+            // from where the sun ray crosses the water level down to the first thing it meets
+            const glm::dvec3 start = glm::dvec3(o.x(), o.y(), o.z()) - L * ((o.z() - level) / L.z);
+            const Hit b = scene.intersect(start, -L);
+            if (!b.hit) continue;
+            const osg::Vec3d q = osg::Vec3d(b.point.x, b.point.y, b.point.z) * lighting.localToTile;
+            // bilinear between texel centres, as the texture filter reads it
+            const double x = q.x() * n - 0.5, y = q.y() * n - 0.5;
+            const int x0 = int(std::floor(x)), y0 = int(std::floor(y));
+            const double fx = x - x0, fy = y - y0;
+            const double v = (1 - fx) * (1 - fy) * texel(x0, y0) + fx * (1 - fy) * texel(x0 + 1, y0) +
+                             (1 - fx) * fy * texel(x0, y0 + 1) + fx * fy * texel(x0 + 1, y0 + 1);
+            // faded as the scene program fades it: by the bed point's depth (the green channel's, as
+            // the reference's photons)
+            const double fade = std::exp(-double(lighting.channelExtinction.y()) * std::max(0.0, level - b.point.z));
+            reinterpret_cast<float*>(out->data(i, j))[0] = float(v * fade);
+        }
     return out;
 }
 

@@ -6,6 +6,8 @@
 #pragma once
 #include "Reference.h"
 #include <osg/Matrixd>
+#include <osg/Image>
+#include <osgWater/SceneLighting>
 #include <cstddef>
 #include <vector>
 
@@ -30,5 +32,14 @@ struct PhotonImage {
 PhotonImage tracePhotons(const RayCaster& scene, const RayCaster& water, const osgWater::WaterSurface& surface,
                          double t, const osg::Matrixd& localToSun, const osg::Vec3d& towardsSun,
                          const PhotonSettings& settings);
+
+//! Tileable caustics brought into the reference's texels: for each texel of the sun's window
+//! (`lighting.localToSun`, `resolution` per side), what the scene shader reads from the repeating
+//! tile (RGBA float, `lighting.localToTile`) at the bed point under it: the first scene hit below
+//! the water `level` along the straight sun ray (0 where there is none), faded by that point's depth
+//! as the scene program fades it (the green channel). RGBA float, value in red.
+osg::ref_ptr<osg::Image> tileSeenFromTheSun(const osg::Image* tile, const RayCaster& scene,
+                                            const osgWater::CausticsLighting& lighting, const osg::Vec3d& towardsSun,
+                                            double level, int resolution);
 
 }

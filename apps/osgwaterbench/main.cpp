@@ -306,12 +306,22 @@ int main(int argc, char** argv)
             if (osg::ref_ptr<osg::Image> caustics = probe.readCaustics(*water)) {
                 r.nanPixels += countNonFinite(caustics.get());
                 const osgWater::CausticsCamera* cc = water->getCausticsCamera();
-                const std::pair<double, int> key(v.t, cc->getResolution()); // a preset may change the resolution
+                // a tile: what the scene shader reads at the bed point under each texel of the sun's
+                // window, at the tile's texel size
+                int resolution = cc->getResolution();
+                if (cc->getLighting().tiled) {
+                    const double tileTexel = water->getSettings()->getCausticsTileSize() / cc->getResolution();
+                    const double window = std::max(cc->getWindow().x(), cc->getWindow().y());
+                    resolution = std::max(1, int(std::lround(window / tileTexel)));
+                    caustics = tileSeenFromTheSun(caustics.get(), sceneCaster, cc->getLighting(),
+                                                  water->getSettings()->getSunDirection(), surface->getLevel(), resolution);
+                }
+                const std::pair<double, int> key(v.t, resolution); // a preset may change the resolution
                 auto it = photonImages.find(key);
                 if (it == photonImages.end()) {
                     PhotonSettings ps;
                     ps.photons = o.photons;
-                    ps.resolution = cc->getResolution();
+                    ps.resolution = resolution;
                     ps.attenuation = osgWater::photonExtinction(*base); // what the photon pass fades by
                     ps.media = media;
                     ps.progress = !o.quick;
@@ -321,7 +331,7 @@ int main(int argc, char** argv)
                 }
                 // blocks of one size on the bed whatever the window and resolution (a focused window
                 // has fewer texels of the same size): comparable across techniques
-                const double texelMetres = std::max(cc->getWindow().x(), cc->getWindow().y()) / cc->getResolution();
+                const double texelMetres = std::max(cc->getWindow().x(), cc->getWindow().y()) / resolution;
                 const int block = std::max(1, int(std::lround(kCausticsBlockMetres / texelMetres)));
                 r.causticsErrors = measureCaustics(it->second, caustics.get(), block);
             }
