@@ -75,6 +75,7 @@ struct Group {
     bool areaMesh;    // the caustics by the area-ratio mesh (else photon splatting), supersampled every other time
     bool reflective;  // reflective caustics too
     float tile;       // tileable caustics' tile (0: off)
+    bool environment; // the environment cube map (drawn from the scene)
     int textureSize, photonGrid, viewport;
     bool rotation, glow, reflection, refraction;
     DebugOutput debug;
@@ -117,6 +118,7 @@ std::vector<Group> groups()
         x.areaMesh = i % 4 >= 2; // with every gather (which changes every other group)
         x.reflective = i % 5 == 2;
         x.tile = i % 7 == 4 ? 3.0f : 0.0f;
+        x.environment = i % 6 == 3;
         // huge targets (8192: clamped to 4096 by the settings, then to the context) cost seconds a
         // frame on a software rasteriser: one group each, the others alternate tiny and small
         x.textureSize = i == 10 ? 8192 : (i % 2 ? 16 : 64);
@@ -169,7 +171,7 @@ std::string describe(const Group& g, const Config& c)
     s << sceneName(g.scene) << ", "
       << (g.steps ? "iterative " + std::to_string(g.steps) : std::string(g.planeLookups ? "plane" : "one-step"))
       << (g.planeLookups ? ", plane reflection" : "")
-      << ", fresnel " << g.fresnel << ", underwater " << g.underwater << ", gather " << g.gather << (g.areaMesh ? " (mesh)" : "") << (g.reflective ? " (reflective)" : "") << (g.tile > 0.0f ? " (tiled)" : "") << ", textures "
+      << ", fresnel " << g.fresnel << ", underwater " << g.underwater << ", gather " << g.gather << (g.areaMesh ? " (mesh)" : "") << (g.reflective ? " (reflective)" : "") << (g.tile > 0.0f ? " (tiled)" : "") << (g.environment ? ", environment map" : "") << ", textures "
       << g.textureSize << ", photons " << g.photonGrid << ", viewport " << g.viewport << ", rotation " << g.rotation
       << ", glow " << g.glow << ", debug " << g.debug << "; eye height " << c.eyeHeight << ", pitch " << c.pitch
       << ", yaw " << c.yaw << ", sun " << c.sunElevation << ", IOR " << c.ior << ", t " << c.time << ", amplitude "
@@ -192,6 +194,7 @@ void apply(WaterNode* water, const Group& g)
     s->setCausticsSupersampling(g.areaMesh && g.steps % 2 == 1);
     s->setReflectiveCaustics(g.reflective);
     s->setCausticsTileSize(g.tile);
+    s->setEnvironmentMapEnabled(g.environment);
     s->setReflectionTextureSize(g.textureSize);
     s->setRefractionTextureSize(g.textureSize);
     s->setCausticsResolution(g.textureSize);
