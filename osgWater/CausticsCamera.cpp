@@ -181,6 +181,7 @@ void CausticsCamera::update(const Frame& f)
     depthPass.level = f.level;
     applyLighting(depthPass);
     _tiled = !_reflected && f.tile > 0.0;
+    _tileSide = _tiled ? f.tile : 0.0;
     if (_tiled) {
         // one tile of the surface seen straight down, its light on the flat bed (the depth map above
         // still gives the shadows)
@@ -222,6 +223,12 @@ void CausticsCamera::update(const Frame& f)
         c->setFilter(osg::Texture::MIN_FILTER, filter);
         c->setFilter(osg::Texture::MAG_FILTER, filter);
     }
+}
+
+double CausticsCamera::getTexelSize() const
+{
+    const double side = _tiled ? _tileSide : std::max(_window.x(), _window.y());
+    return side / std::max(1, getResolution());
 }
 
 bool CausticsCamera::depthStale(unsigned int context) const

@@ -637,8 +637,7 @@ double WaterNode::causticsHoldTime() const
 {
     if (!_caustics.valid() || !_skipping) return 0.0;
     // the pattern is a sum of the waves' patterns, each travelling at its phase speed
-    const osg::Vec3d& window = _caustics->getWindow();
-    const double texel = std::max(window.x(), window.y()) / std::max(1, _caustics->getResolution());
+    const double texel = _caustics->getTexelSize();
     const double speed = _surface->getMaxPhaseSpeed();
     if (speed == 0.0) return std::numeric_limits<double>::infinity();
     return _settings->getCausticsMotionTolerance() * texel / speed;

@@ -139,6 +139,13 @@ TEST(Skips, CausticsAreReusedUntilTheWavesCanHaveMovedThem)
     h.frame(1.0 + 1.1 * hold);
     EXPECT_TRUE(rendered()) << "the sun moved";
 
+    // a tile's texels are the tile's: half of one of those
+    s->setCausticsTileSize(2.0f);
+    h.frame(1.0 + 1.1 * hold);
+    const double tileTexel = 2.0 / water->getCausticsCamera()->getResolution();
+    EXPECT_NEAR(water->getCausticsHoldTime(), 0.5 * tileTexel / water->getSurface()->getMaxPhaseSpeed(), 1e-9);
+    s->setCausticsTileSize(0.0f);
+
     // still water: kept however much time passes
     water->getSurface()->setWaves({});
     h.frame(5.0);
