@@ -52,6 +52,19 @@ osg::Geode* redWall()
                         osg::Vec4(1, 0, 0, 1));
 }
 
+// flat mirror-only water under a red wall, the eye 1 m up looking at (10, 2.5, 0)
+struct WallScene {
+    Harness h{ 64, 64 };
+    osg::ref_ptr<WaterNode> water = mirrorOnlyWater(100.0f);
+    WallScene()
+    {
+        if (!h.ok()) return;
+        water->addChild(redWall());
+        h.setScene(water.get());
+        h.lookAt(osg::Vec3d(0, 0, 1), osg::Vec3d(10, 2.5, 0));
+    }
+};
+
 osg::Vec3 centrePixel(Harness& h)
 {
     h.frame(1.0);
@@ -90,15 +103,13 @@ TEST(RenderEnvironment, EachReflectedDirectionReadsItsFaceOfTheUsersMap)
 
 TEST(RenderEnvironment, TheDrawnMapShowsWhatStandsAboveTheWaterWhereItStands)
 {
-    Harness h(64, 64);
-    REQUIRE_GL(h);
-    osg::ref_ptr<WaterNode> water = mirrorOnlyWater(100.0f);
     // a face drawn mirrored left-right or upside down shows the wall on the wrong side, or not at all
-    water->addChild(redWall());
-    h.setScene(water.get());
+    WallScene sc;
+    REQUIRE_GL(sc.h);
+    Harness& h = sc.h;
+    WaterNode* water = sc.water.get();
     // the centre ray meets the water at (10, +-2.5, 0) and leaves along (10, +-2.5, 1): towards
     // (80, +-20, 7), on the wall or beside it
-    h.lookAt(osg::Vec3d(0, 0, 1), osg::Vec3d(10, 2.5, 0));
     const osg::Vec3 onWall = centrePixel(h);
     EXPECT_NEAR(onWall.x(), 1.0, 0.05) << onWall;
     EXPECT_NEAR(onWall.y(), 0.0, 0.05) << onWall;
@@ -116,12 +127,10 @@ TEST(RenderEnvironment, TheDrawnMapShowsWhatStandsAboveTheWaterWhereItStands)
 
 TEST(RenderEnvironment, TheDrawnMapIsDrawnOnceThenOnlyWhenAskedOrMoved)
 {
-    Harness h(64, 64);
-    REQUIRE_GL(h);
-    osg::ref_ptr<WaterNode> water = mirrorOnlyWater(100.0f);
-    water->addChild(redWall());
-    h.setScene(water.get());
-    h.lookAt(osg::Vec3d(0, 0, 1), osg::Vec3d(10, 2.5, 0));
+    WallScene sc;
+    REQUIRE_GL(sc.h);
+    Harness& h = sc.h;
+    WaterNode* water = sc.water.get();
     auto drawn = [&](double t) {
         h.frame(t);
         return water->getPassPlan(h.camera()).runs(PASS_ENVIRONMENT);
