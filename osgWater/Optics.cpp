@@ -229,6 +229,55 @@ BottomHit iterativeSearch(const glm::vec3& U, const glm::vec3& R, int steps, con
     return best;
 }
 
+BottomHit mirrorSearch(const glm::vec3& U, const glm::vec3& R, int steps, const DepthLookup& lookup, float tolerance,
+                       const glm::vec4& floorPlane)
+{
+    // a surface under the floor plane is seen as sky
+    const DepthLookup aboveFloor = [&](const glm::vec3& P) {
+        DepthSample s = lookup(P);
+        if (s.hit && glm::dot(floorPlane, glm::vec4(P * (s.z / P.z), 1.0f)) < 0.0f) s.hit = false;
+        return s;
+    };
+    const float sky = 1.0e30f;
+    glm::vec3 A;
+    float f0 = sky;
+    // U's line of sight, else the camera ray through the point R (parallel to the ray): its far end
+    if (bottomAlongRay(U, aboveFloor, A)) f0 = std::max(U.z - A.z, 0.0f);
+    else if (!bottomAlongRay(R, aboveFloor, A)) return BottomHit();
+    BottomHit best;
+    best.valid = true;
+    best.W = best.A = A;
+    best.error = INFINITY;
+    // f(t): how far U + t R lies in front of the surface on its camera ray; the hit is its first root
+    float tLo = 0.0f, fLo = f0, tHi = -1.0f, fHi = 0.0f; // tHi < 0: no point behind a surface yet
+    int side = 0; // the end the last candidate replaced: -1 the front one, 1 the back one
+    float t = std::max(glm::length(A - U), 1.0e-3f);
+    steps = std::min(std::max(steps, 1), 8);
+    for (int i = 1; i <= steps; ++i) {
+        const glm::vec3 W = U + t * R;
+        float f = sky;
+        if (bottomAlongRay(W, aboveFloor, A)) {
+            f = W.z - A.z;
+            const float e = glm::length(A - W);
+            if (e < best.error) { best.W = W; best.A = A; best.error = e; }
+            if (e < tolerance) break;
+        }
+        const float tPrev = tLo, fPrev = fLo;
+        // Illinois: an end kept twice in a row has its value halved, so the other end moves too
+        if (f > 0.0f) { tLo = t; fLo = f; if (side < 0) fHi *= 0.5f; side = -1; }
+        else { tHi = t; fHi = f; if (side > 0 && fLo < 1.0e29f) fLo *= 0.5f; side = 1; }
+        if (tHi < 0.0f) // still in front: the secant on the last two points, at most 4x further
+            t = fPrev > f && fPrev < 1.0e29f ? std::min(t + (t - tPrev) * f / (fPrev - f), 4.0f * t) : 2.0f * t;
+        else // bracketed: regula falsi (bisection next to the sky)
+            t = fLo < 1.0e29f ? tLo + (tHi - tLo) * fLo / (fLo - fHi) : 0.5f * (tLo + tHi);
+    }
+    if (best.error <= tolerance + 0.01f * glm::length(best.W - U)) return best;
+    if (tHi < 0.0f) return BottomHit(); // every candidate in front: the ray went on past everything
+    best.W = best.A = U + t * R; // the root's best estimate in its bracket
+    best.error = 0.0f;
+    return best;
+}
+
 bool intersectPlaneZ(const glm::vec3& U, const glm::vec3& R, float planeZ, glm::vec3& hit)
 {
     if (std::fabs(R.z) < 1.0e-12f) return false;

@@ -28,6 +28,14 @@ void PassCamera::attachColorTexture()
     attach(osg::Camera::COLOR_BUFFER, _color.get());
 }
 
+void PassCamera::attachDepthTexture()
+{
+    // nearest: a search reads depths, and a blend of two surfaces' depths is neither
+    _depth = makeTargetTexture(_width, _height, GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT, GL_FLOAT, false);
+    _depth->setName("osgWater.passDepth");
+    attach(osg::Camera::DEPTH_BUFFER, _depth.get());
+}
+
 osg::Texture2D* osgWater::makeTargetTexture(int size, GLenum internalFormat, GLenum format, GLenum type, bool linear)
 {
     return makeTargetTexture(size, size, internalFormat, format, type, linear);

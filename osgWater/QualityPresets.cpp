@@ -9,6 +9,7 @@ namespace {
 
 struct SpeedSettings {
     WaterSettings::RefractionLookup lookup;
+    WaterSettings::ReflectionLookup reflection;
     int searchSteps;
     float passTargetScale;
     int textureSize; // reflection and refraction, when the scale is 0
@@ -17,7 +18,7 @@ struct SpeedSettings {
     float glowResolution;
     bool operator==(const SpeedSettings& o) const
     {
-        return lookup == o.lookup && searchSteps == o.searchSteps && passTargetScale == o.passTargetScale &&
+        return lookup == o.lookup && reflection == o.reflection && searchSteps == o.searchSteps && passTargetScale == o.passTargetScale &&
                textureSize == o.textureSize && causticsResolution == o.causticsResolution &&
                photonGrid == o.photonGrid && causticsMotionTolerance == o.causticsMotionTolerance &&
                glowResolution == o.glowResolution;
@@ -26,19 +27,20 @@ struct SpeedSettings {
 
 // QUALITY_FAST, QUALITY_BALANCED, QUALITY_EXACT
 const SpeedSettings kPresets[3] = {
-    // one-step lookup (SCCG 2008), targets a third of the view, caustics at half the resolution kept two texels
-    { WaterSettings::ONE_STEP, 3, 0.35f, 512, 128, 256, 2.0f, 0.125f },
-    // thesis defaults: 3-step search, 512-texel squares, caustics kept half a texel
-    { WaterSettings::ITERATIVE, 3, 0.0f, 512, 256, 512, 0.5f, 0.25f },
-    // 8-step search, targets of the view's resolution, finer caustics rendered whenever the waves move
-    { WaterSettings::ITERATIVE, 8, 1.0f, 512, 512, 1024, 0.0f, 0.5f },
+    // one-step lookup (SCCG 2008) and the thesis's offset reflection, targets a third of the view,
+    // caustics at half the resolution kept two texels
+    { WaterSettings::ONE_STEP, WaterSettings::REFLECTION_OFFSET, 3, 0.35f, 512, 128, 256, 2.0f, 0.125f },
+    // the defaults: 3-step searches, 512-texel squares, caustics kept half a texel
+    { WaterSettings::ITERATIVE, WaterSettings::REFLECTION_SEARCH, 3, 0.0f, 512, 256, 512, 0.5f, 0.25f },
+    // 8-step searches, targets of the view's resolution, finer caustics rendered whenever the waves move
+    { WaterSettings::ITERATIVE, WaterSettings::REFLECTION_SEARCH, 8, 1.0f, 512, 512, 1024, 0.0f, 0.5f },
 };
 
 SpeedSettings speedSettingsOf(const WaterSettings& s)
 {
     // one texture size when both agree; otherwise no preset can match
     const int size = s.getReflectionTextureSize() == s.getRefractionTextureSize() ? s.getRefractionTextureSize() : -1;
-    return { s.getRefractionLookup(), s.getSearchSteps(), s.getPassTargetScale(), size, s.getCausticsResolution(),
+    return { s.getRefractionLookup(), s.getReflectionLookup(), s.getSearchSteps(), s.getPassTargetScale(), size, s.getCausticsResolution(),
              s.getPhotonGridSize(), s.getCausticsMotionTolerance(), s.getGlowResolution() };
 }
 
@@ -49,6 +51,7 @@ void WaterSettings::setQuality(Quality q)
     if (q < QUALITY_FAST || q > QUALITY_EXACT) return;
     const SpeedSettings& p = kPresets[q];
     setRefractionLookup(p.lookup);
+    setReflectionLookup(p.reflection);
     setSearchSteps(p.searchSteps);
     setPassTargetScale(p.passTargetScale);
     setReflectionTextureSize(p.textureSize);

@@ -10,7 +10,7 @@ ReflectionCamera::ReflectionCamera(osg::Group* scene, osg::StateSet* sceneState,
 {
     setName("osgWater.ReflectionCamera");
     attachColorTexture();
-    attach(osg::Camera::DEPTH_BUFFER, GL_DEPTH_COMPONENT24);
+    attachDepthTexture(); // the mirror search reads it
     // the mirror flips winding: keep front faces front
     getOrCreateStateSet()->setAttribute(new osg::FrontFace(osg::FrontFace::CLOCKWISE));
 }

@@ -10,9 +10,7 @@ RefractionCamera::RefractionCamera(osg::Group* scene, osg::StateSet* sceneState,
 {
     setName("osgWater.RefractionCamera");
     attachColorTexture();
-    _depth = makeTargetTexture(width, height, GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT, GL_FLOAT, false);
-    _depth->setName("osgWater.refractionDepth");
-    attach(osg::Camera::DEPTH_BUFFER, _depth.get());
+    attachDepthTexture();
     // thesis fig. 3: clipped solids must not show their insides
     getOrCreateStateSet()->setAttributeAndModes(new osg::CullFace(osg::CullFace::BACK), osg::StateAttribute::ON);
     setClearColor(osg::Vec4(0.0f, 0.0f, 0.0f, 0.0f));

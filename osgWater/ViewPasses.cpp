@@ -5,6 +5,21 @@
 
 using namespace osgWater;
 
+namespace {
+
+// A depth search's inputs for one pass: prefix + View, ViewInverse, Proj, InvProj
+void setPassMatrices(osg::StateSet* ss, const std::string& prefix, const PassCamera& pass)
+{
+    const osg::Matrixd& v = pass.getViewMatrix();
+    const osg::Matrixd& p = pass.getProjectionMatrix();
+    ss->getUniform(prefix + "View")->set(osg::Matrixf(v));
+    ss->getUniform(prefix + "ViewInverse")->set(osg::Matrixf(osg::Matrixd::inverse(v)));
+    ss->getUniform(prefix + "Proj")->set(osg::Matrixf(p));
+    ss->getUniform(prefix + "InvProj")->set(osg::Matrixf(osg::Matrixd::inverse(p)));
+}
+
+}
+
 ViewPasses::ViewPasses(osg::Group* scene, osg::StateSet* sceneState, osg::StateSet* waterState, osg::StateSet* lighting,
                        const osg::Vec2i& reflectionSize, const osg::Vec2i& refractionSize)
     : _scene(scene), _sceneState(sceneState), _waterState(waterState), _lighting(lighting)
@@ -25,8 +40,10 @@ ViewPasses::ViewPasses(osg::Group* scene, osg::StateSet* sceneState, osg::StateS
     _waterInputs->setTextureAttribute(UNIT_REFLECTION, _reflection->getColorTexture());
     _waterInputs->setTextureAttribute(UNIT_REFRACTION, _refraction->getColorTexture());
     _waterInputs->setTextureAttribute(UNIT_REFRACTION_DEPTH, _refraction->getDepthTexture());
-    const char* mats[] = { "osgWater_ReflectionMVP", "osgWater_RefractionView", "osgWater_RefractionViewInverse",
-                           "osgWater_RefractionProj", "osgWater_RefractionInvProj" };
+    _waterInputs->setTextureAttribute(UNIT_REFLECTION_DEPTH, _reflection->getDepthTexture());
+    const char* mats[] = { "osgWater_ReflectionMVP", "osgWater_ReflectionView", "osgWater_ReflectionViewInverse",
+                           "osgWater_ReflectionProj", "osgWater_ReflectionInvProj", "osgWater_RefractionView",
+                           "osgWater_RefractionViewInverse", "osgWater_RefractionProj", "osgWater_RefractionInvProj" };
     for (const char* m : mats) _waterInputs->addUniform(new osg::Uniform(m, osg::Matrixf()));
     _waterInputs->addUniform(new osg::Uniform("osgWater_EyeLocal", osg::Vec3f()));
 }
@@ -88,12 +105,8 @@ void ViewPasses::update(const PassContext& ctx, const PassPlan& plan, const Scen
 
     osg::StateSet* ss = _waterInputs.get();
     ss->getUniform("osgWater_ReflectionMVP")->set(osg::Matrixf(_reflection->getViewProjection()));
-    const osg::Matrixd& rv = _refraction->getViewMatrix();
-    const osg::Matrixd& rp = _refraction->getProjectionMatrix();
-    ss->getUniform("osgWater_RefractionView")->set(osg::Matrixf(rv));
-    ss->getUniform("osgWater_RefractionViewInverse")->set(osg::Matrixf(osg::Matrixd::inverse(rv)));
-    ss->getUniform("osgWater_RefractionProj")->set(osg::Matrixf(rp));
-    ss->getUniform("osgWater_RefractionInvProj")->set(osg::Matrixf(osg::Matrixd::inverse(rp)));
+    setPassMatrices(ss, "osgWater_Reflection", *_reflection);
+    setPassMatrices(ss, "osgWater_Refraction", *_refraction);
     ss->getUniform("osgWater_EyeLocal")->set(osg::Vec3f(eyePosition(ctx.view)));
     setDefineIf(ss, "OSGWATER_EYE_BELOW", ctx.eyeBelow);
     // the shader reads a pass's texture only when the pass ran this frame

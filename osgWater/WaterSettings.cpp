@@ -42,7 +42,7 @@ WaterSettings::WaterSettings()
       _absorption(defaultAbsorption()), _scattering(defaultScattering()), _backscattering(defaultBackscattering()),
       _fresnelModel(FRESNEL_SCHLICK), _fresnelExponent(5.0f), _fresnelReciprocalPower(6.62f),
       _reflectionScale(1.0f),
-      _refractionLookup(ITERATIVE), _reflectionLookup(REFLECTION_OFFSET), _reflectionPlaneHeight(0.0f),
+      _refractionLookup(ITERATIVE), _reflectionLookup(REFLECTION_SEARCH), _reflectionPlaneHeight(0.0f),
       _refractionPlaneDepth(0.0f), _searchSteps(3), _searchTolerance(0.01f),
       _oneStepScale(1.0f), _oneStepMaxDepth(20.0f), _underwaterLookupScale(1.5f),
       _fovExtNear(1.5f), _fovExtFar(1.2f), _fovExtFalloff(10.0f),
@@ -120,7 +120,7 @@ void WaterSettings::setScattering(const osg::Vec3& b) { _scattering = clampColor
 void WaterSettings::setBackscattering(const osg::Vec3& bb) { _backscattering = clampColor("backscattering", bb, defaultBackscattering(), 100.0f); touch(); }
 void WaterSettings::setFresnelModel(FresnelModel m) { _fresnelModel = validEnum("fresnelModel", m, FRESNEL_RECIPROCAL, FRESNEL_SCHLICK); touch(); }
 void WaterSettings::setRefractionLookup(RefractionLookup l) { _refractionLookup = validEnum("refractionLookup", l, PLANE_OFFSET, ITERATIVE); touch(); }
-void WaterSettings::setReflectionLookup(ReflectionLookup l) { _reflectionLookup = validEnum("reflectionLookup", l, REFLECTION_PLANE, REFLECTION_OFFSET); touch(); }
+void WaterSettings::setReflectionLookup(ReflectionLookup l) { _reflectionLookup = validEnum("reflectionLookup", l, REFLECTION_SEARCH, REFLECTION_SEARCH); touch(); }
 void WaterSettings::setReflectionPlaneHeight(float m) { _reflectionPlaneHeight = clampOr("reflectionPlaneHeight", m, 0.0f, 10000.0f, 0.0f); touch(); }
 void WaterSettings::setRefractionPlaneDepth(float m) { _refractionPlaneDepth = clampOr("refractionPlaneDepth", m, 0.0f, 10000.0f, 0.0f); touch(); }
 void WaterSettings::setUnderwaterModel(UnderwaterModel m) { _underwaterModel = validEnum("underwaterModel", m, UNDERWATER_THESIS, UNDERWATER_PHYSICAL); touch(); }
@@ -137,7 +137,7 @@ namespace {
 // each enum's names in its values' order: one table per enum, read both ways
 const char* const kFresnelNames[] = { "schlick", "power", "exact", "reciprocal" };
 const char* const kRefractionLookupNames[] = { "one-step", "iterative", "plane" };
-const char* const kReflectionLookupNames[] = { "offset", "plane" };
+const char* const kReflectionLookupNames[] = { "offset", "plane", "search" };
 const char* const kUnderwaterModelNames[] = { "physical", "thesis" };
 const char* const kCausticsGatherNames[] = { "auto", "copy", "texture", "cpu" };
 const char* const kCausticsMethodNames[] = { "photons", "mesh" };

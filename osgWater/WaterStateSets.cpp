@@ -58,6 +58,7 @@ WaterStateSets::WaterStateSets()
     _water->addUniform(new osg::Uniform("osgWater_ReflectionTex", int(UNIT_REFLECTION)));
     _water->addUniform(new osg::Uniform("osgWater_RefractionTex", int(UNIT_REFRACTION)));
     _water->addUniform(new osg::Uniform("osgWater_RefractionDepth", int(UNIT_REFRACTION_DEPTH)));
+    _water->addUniform(new osg::Uniform("osgWater_ReflectionDepth", int(UNIT_REFLECTION_DEPTH)));
     _water->addUniform(new osg::Uniform("osgWater_EnvironmentTex", int(UNIT_ENVIRONMENT)));
     _water->setDataVariance(osg::Object::DYNAMIC);
     osg::ref_ptr<osg::Uniform> waves = new osg::Uniform(osg::Uniform::FLOAT_VEC4, "osgWater_Waves", WaterSurface::MAX_WAVES);
@@ -119,7 +120,7 @@ void WaterStateSets::applySettings(const WaterSettings& s, const WaterSurface& s
     setDefineIf(w, "OSGWATER_GRID", surface.usesGrid());
     setDefineIf(w, "OSGWATER_ONE_STEP", s.getRefractionLookup() == WaterSettings::ONE_STEP);
     setDefineIf(w, "OSGWATER_REFRACTION_PLANE", s.getRefractionLookup() == WaterSettings::PLANE_OFFSET);
-    setDefineIf(w, "OSGWATER_REFLECTION_PLANE", s.getReflectionLookup() == WaterSettings::REFLECTION_PLANE);
+    w->setDefine("OSGWATER_REFLECTION", std::to_string(int(s.getReflectionLookup()))); // the enum's numbers
     w->setDefine("OSGWATER_FRESNEL", std::to_string(int(s.getFresnelModel()))); // the enum's numbers
     w->setDefine("OSGWATER_UNDERWATER", s.getUnderwaterModel() == WaterSettings::UNDERWATER_THESIS ? "1" : "0");
     // OSGWATER_NO_REFLECTION / OSGWATER_NO_REFRACTION follow what ran (ViewPasses), not the

@@ -84,42 +84,135 @@ bool owLineIntersection(vec3 U, vec3 R, vec3 A1, vec3 Q, out vec3 W)
     return true;
 }
 
-// --- depth texture of the refraction pass, in that pass's eye space -------------------------
-uniform sampler2D osgWater_RefractionDepth;
-uniform mat4 osgWater_RefractionProj;
-uniform mat4 osgWater_RefractionInvProj;
+// --- a pass's depth texture, read in that pass's eye space --------------------------------
+// The searches take the pass as its depth texture and an owDepthPass: the refraction pass (the
+// bottom search), the reflection pass (the mirror search) and the sun's camera (photons).
+struct owDepthPass {
+    mat4 proj, invProj;
+    vec4 floorPlane; // eye space: a surface with dot(floorPlane, A) < 0 does not count (seen as sky)
+};
 
-// texture coordinate of an eye-space point of the refraction pass; false behind the camera
-bool owRefractionTexCoord(vec3 P, out vec2 tc)
+// texture coordinate of an eye-space point of a pass; false behind the camera
+bool owPassTexCoord(mat4 proj, vec3 P, out vec2 tc)
 {
-    vec4 c = osgWater_RefractionProj * vec4(P, 1.0);
+    vec4 c = proj * vec4(P, 1.0);
     tc = vec2(0.5);
     if (!(c.w > 1e-6)) return false;
     tc = c.xy / c.w * 0.5 + 0.5;
     return true;
 }
 
-// A: the first surface on the camera ray through P; false for sky (depth 1.0). Camera rays meet
-// at the eye (A = P Z / P.z), or are parallel to -Z when the includer defines OSGWATER_ORTHO_DEPTH
-// (the sun's orthographic camera of the caustics pass: A = (P.xy, Z)).
-bool owBottomAlongRay(vec3 P, out vec3 A)
+// A: the first surface on the pass camera's ray through P; false for sky (the cleared depth) or a
+// surface under the pass's floor plane. Camera rays meet at the eye (A = P Z / P.z), or are
+// parallel to -Z when the includer defines OSGWATER_ORTHO_DEPTH (the sun's orthographic camera of
+// the caustics pass: A = (P.xy, Z)).
+bool owSurfaceAlongRay(sampler2D depthTex, owDepthPass pass, vec3 P, out vec3 A)
 {
     A = P;
     vec2 tc;
-    if (!(P.z < -1e-6) || !owRefractionTexCoord(P, tc)) return false;
-    float d = texture(osgWater_RefractionDepth, tc).r;
-    if (d >= 0.999999) return false;
-    vec4 e = osgWater_RefractionInvProj * vec4(vec3(tc, d) * 2.0 - 1.0, 1.0);
+    if (!(P.z < -1e-6) || !owPassTexCoord(pass.proj, P, tc)) return false;
+    float d = texture(depthTex, tc).r;
+    // only the cleared depth is sky: a sky dome drawn just inside the far plane is a surface
+    if (d >= 1.0) return false;
+    vec4 e = pass.invProj * vec4(vec3(tc, d) * 2.0 - 1.0, 1.0);
     float Z = e.z / e.w;
 #ifdef OSGWATER_ORTHO_DEPTH
     A = vec3(P.xy, Z);
 #else
     A = P * (Z / P.z);
 #endif
-    return true;
+    return dot(pass.floorPlane, vec4(A, 1.0)) >= 0.0;
 }
 
 struct owBottomHit { bool valid; vec3 W; vec3 A; float error; };
+
+// The loop's static bound is the search steps' define (the includer imports OSGWATER_SEARCH_STEPS):
+// a software rasteriser pays for a loop up to its static bound more than for a uniform's count.
+#ifndef OSGWATER_SEARCH_STEPS
+#define OSGWATER_SEARCH_STEPS 8
+#endif
+
+// The surface behind P as owSurfaceAlongRay sees it, and none off the texture (where the texture's
+// edge would answer for what the pass did not draw).
+bool owSurfaceInView(sampler2D depthTex, owDepthPass pass, vec3 P, out vec3 A)
+{
+    vec2 tc;
+    A = P;
+    return owPassTexCoord(pass.proj, P, tc) && all(greaterThanEqual(tc, vec2(0.0))) && all(lessThanEqual(tc, vec2(1.0)))
+        && owSurfaceAlongRay(depthTex, pass, P, A);
+}
+
+// The reflected ray U + t R (t > 0) in the reflection pass's eye space, where the mirrored scene
+// lies: its hit. Invalid: the ray meets nothing the pass drew (the sky, or open water under water):
+// the caller looks it up by its direction. Mirrored in osgWater::optics::mirrorSearch.
+// f(t): how far the ray's point W(t) lies in front of the surface on its camera ray (eye-space z;
+// sky: in front of everything). f(0) >= 0, and the hit is the first root. The candidates go out
+// from t_1 = |A_1 - U| (the thesis's first guess) by secant steps on f until one lies behind a
+// surface, then close in on the root by regula falsi (Illinois) between the last point in front
+// and the first behind. The pass's floor plane: the ray leaves U away from the water, so what lies
+// behind U's height is no hit (the pass keeps a band beyond the level for the crests: a shore under
+// the troughs would hide the ray's true hit). Off the texture the pass sees nothing. Where U's own
+// line of sight sees no surface, t_1 comes from what the pass sees along R from its eye (the ray's
+// far end), and there is none when that sees none either. No candidate within `tolerance` + 1% of
+// its distance: the root's estimate in its bracket when there is one, else the ray went on past
+// everything: none.
+owBottomHit owMirrorSearch(sampler2D depthTex, owDepthPass pass, vec3 U, vec3 R, int steps, float tolerance)
+{
+    owBottomHit none = owBottomHit(false, U, U, 0.0);
+    vec3 A;
+    float f0 = 1e30;
+    if (owSurfaceInView(depthTex, pass, U, A)) f0 = max(U.z - A.z, 0.0);
+    else if (!owSurfaceInView(depthTex, pass, R, A)) return none;
+    owBottomHit best = owBottomHit(true, A, A, 1e30);
+    float tLo = 0.0, fLo = f0, tHi = -1.0, fHi = 0.0; // tHi < 0: no point behind a surface yet
+    int side = 0; // the end the last candidate replaced: -1 the front one, 1 the back one
+    float t = max(length(A - U), 1e-3);
+    for (int i = 1; i <= OSGWATER_SEARCH_STEPS; ++i) {
+        if (i > steps) break;
+        vec3 W = U + t * R;
+        float f = 1e30;
+        if (owSurfaceInView(depthTex, pass, W, A)) {
+            f = W.z - A.z;
+            float e = length(A - W);
+            if (e < best.error) { best.W = W; best.A = A; best.error = e; }
+            if (e < tolerance) break;
+        }
+        float tPrev = tLo, fPrev = fLo;
+        // Illinois: an end kept twice in a row has its value halved, so the other end moves too
+        if (f > 0.0) { tLo = t; fLo = f; if (side < 0) fHi *= 0.5; side = -1; }
+        else { tHi = t; fHi = f; if (side > 0 && fLo < 1e29) fLo *= 0.5; side = 1; }
+        if (tHi < 0.0) // still in front: the secant on the last two points, at most 4x further
+            t = fPrev > f && fPrev < 1e29 ? min(t + (t - tPrev) * f / (fPrev - f), 4.0 * t) : 2.0 * t;
+        else // bracketed: regula falsi (bisection next to the sky)
+            t = fLo < 1e29 ? tLo + (tHi - tLo) * fLo / (fLo - fHi) : 0.5 * (tLo + tHi);
+    }
+    if (best.error <= tolerance + 0.01 * length(best.W - U)) return best;
+    if (tHi < 0.0) return none;
+    best.W = U + t * R; // the root's best estimate in its bracket
+    best.A = best.W;
+    best.error = 0.0;
+    return best;
+}
+
+// --- the refraction pass ------------------------------------------------------------------
+uniform sampler2D osgWater_RefractionDepth;
+uniform mat4 osgWater_RefractionProj;
+uniform mat4 osgWater_RefractionInvProj;
+
+owDepthPass owRefractionPass()
+{
+    return owDepthPass(osgWater_RefractionProj, osgWater_RefractionInvProj, vec4(0.0, 0.0, 0.0, 1.0));
+}
+
+bool owRefractionTexCoord(vec3 P, out vec2 tc)
+{
+    return owPassTexCoord(osgWater_RefractionProj, P, tc);
+}
+
+bool owBottomAlongRay(vec3 P, out vec3 A)
+{
+    return owSurfaceAlongRay(osgWater_RefractionDepth, owRefractionPass(), P, A);
+}
 
 // SCCG 2008 eq. 1: W = U + clamp(scale dv, 0, maxDv) R
 owBottomHit owOneStepSearch(vec3 U, vec3 R, float scale, float maxDv)
@@ -139,11 +232,6 @@ owBottomHit owOneStepSearch(vec3 U, vec3 R, float scale, float maxDv)
 // A candidate whose camera ray sees sky (it went under a clipped shore, or off the texture) is
 // no bottom: the next candidate is half way back towards U. If no candidate sees a bottom, A_1
 // (the bottom straight behind U, no refraction offset) is the answer: better than none.
-// The loop's static bound is the search steps' define (the includer imports OSGWATER_SEARCH_STEPS):
-// a software rasteriser pays for a loop up to its static bound more than for a uniform's count.
-#ifndef OSGWATER_SEARCH_STEPS
-#define OSGWATER_SEARCH_STEPS 8
-#endif
 owBottomHit owIterativeSearch(vec3 U, vec3 R, int steps, float tolerance)
 {
     owBottomHit best = owBottomHit(false, U, U, 0.0);

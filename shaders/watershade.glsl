@@ -1,16 +1,17 @@
 // Colour of the water surface at a point U (water-local frame), thesis ch. 7, §7.5 and §9.1:
-// refraction by bottom search in the refraction pass's depth texture, reflection lookup
-// W = U + c R, depth attenuation, Fresnel, final mix (eq. 9). Shared by the surface (water.frag)
-// and the near-plane cap (cap.frag), which shades the surface where the near plane cut it away.
-// The includer lists OSGWATER_EYE_BELOW, OSGWATER_ONE_STEP, OSGWATER_REFRACTION_PLANE,
-// OSGWATER_REFLECTION_PLANE, OSGWATER_FRESNEL, OSGWATER_UNDERWATER, OSGWATER_NO_REFLECTION,
-// OSGWATER_NO_REFRACTION, OSGWATER_SEARCH_STEPS, OSGWATER_ENVIRONMENT, OSGWATER_DEBUG in its
-// import_defines. OSGWATER_ENVIRONMENT: the surroundings above the water in a cube map (local
-// frame), read along rays the pass textures do not hold.
+// refraction by bottom search in the refraction pass's depth texture, reflection by the same search
+// in the reflection pass's (or the thesis's lookup W = U + c R), depth attenuation, Fresnel, final
+// mix (eq. 9). Shared by the surface (water.frag) and the near-plane cap (cap.frag), which shades the
+// surface where the near plane cut it away. The includer lists OSGWATER_EYE_BELOW,
+// OSGWATER_ONE_STEP, OSGWATER_REFRACTION_PLANE, OSGWATER_REFLECTION, OSGWATER_FRESNEL,
+// OSGWATER_UNDERWATER, OSGWATER_NO_REFLECTION, OSGWATER_NO_REFRACTION, OSGWATER_SEARCH_STEPS,
+// OSGWATER_ENVIRONMENT, OSGWATER_DEBUG in its import_defines. OSGWATER_ENVIRONMENT: the
+// surroundings above the water in a cube map (local frame), read along rays the pass textures do
+// not hold.
 // Debug output (OSGWATER_DEBUG, see osgWater::DebugOutput), alpha says what rgb holds:
 //   2 a point (local frame), 3 a direction (local frame), -1 nothing found, -2 total internal reflection;
 //   1: the refraction estimate W (the point whose colour is fetched), 2: the reflection lookup
-//   point U + c R, 3: r = the Fresnel weight F. The eye's side is a define
+//   point (or direction), 3: r = the Fresnel weight F. The eye's side is a define
 // (set per view), not a uniform: a software rasteriser runs both sides of a branch.
 #pragma include "optics.glsl"
 
@@ -18,6 +19,11 @@ uniform sampler2D osgWater_ReflectionTex;   // unit 1
 uniform sampler2D osgWater_RefractionTex;   // unit 2
 uniform vec3 osgWater_EyeLocal;
 uniform mat4 osgWater_ReflectionMVP;        // local -> reflection pass clip space
+uniform sampler2D osgWater_ReflectionDepth; // unit 9
+uniform mat4 osgWater_ReflectionView;       // local -> reflection pass eye space (the mirror in it)
+uniform mat4 osgWater_ReflectionViewInverse;
+uniform mat4 osgWater_ReflectionProj;
+uniform mat4 osgWater_ReflectionInvProj;
 uniform mat4 osgWater_RefractionView;       // local -> refraction pass eye space
 uniform mat4 osgWater_RefractionViewInverse;
 
@@ -125,6 +131,32 @@ vec3 owRefractedFromBelow(vec3 U, vec3 R, out vec4 debugHit)
     return osgWater_WaterColor + a * (col - osgWater_WaterColor);
 }
 
+// The point whose colour the reflection pass shows for the reflected ray U + t Rr (a direction,
+// w = 0, for a ray that meets nothing), by OSGWATER_REFLECTION (WaterSettings::ReflectionLookup):
+// 2 the ray's hit searched in the reflection pass's depth texture, 1 its hit on the plane above
+// (DeepWater, from above; under water the offset), 0 the thesis's U + c R.
+vec4 owReflectionLookupPoint(vec3 U, vec3 Rr, bool below)
+{
+#if defined(OSGWATER_REFLECTION) && OSGWATER_REFLECTION == 2 && !defined(OSGWATER_NO_REFLECTION)
+    vec3 u1 = (osgWater_ReflectionView * vec4(U, 1.0)).xyz;
+    vec3 R1 = normalize(mat3(osgWater_ReflectionView) * Rr);
+    // the floor: U's height, on the side the ray leaves to (eye space: the local z row, less U.z)
+    mat4 toLocal = osgWater_ReflectionViewInverse;
+    float side = Rr.z >= 0.0 ? 1.0 : -1.0;
+    vec4 floorPlane = side * (vec4(toLocal[0].z, toLocal[1].z, toLocal[2].z, toLocal[3].z) - vec4(0.0, 0.0, 0.0, U.z))
+                    + vec4(0.0, 0.0, 0.0, 1e-3);
+    owDepthPass pass = owDepthPass(osgWater_ReflectionProj, osgWater_ReflectionInvProj, floorPlane);
+    owBottomHit hit = owMirrorSearch(osgWater_ReflectionDepth, pass, u1, R1, osgWater_SearchSteps,
+                                     osgWater_SearchTolerance);
+    return hit.valid ? vec4((osgWater_ReflectionViewInverse * vec4(hit.W, 1.0)).xyz, 1.0) : vec4(Rr, 0.0);
+#else
+#if defined(OSGWATER_REFLECTION) && OSGWATER_REFLECTION == 1
+    if (!below) return owPlanePoint(U, Rr, osgWater_Level + osgWater_LookupPlanes.x);
+#endif
+    return vec4(U + (below ? osgWater_UnderwaterScale : osgWater_ReflectionScale) * Rr, 1.0);
+#endif
+}
+
 // U: the surface point, Nup: its unit normal (up, into the air), E: unit vector towards the eye.
 vec3 owShadeWater(vec3 U, vec3 Nup, vec3 E, out vec4 debugOut)
 {
@@ -163,13 +195,7 @@ vec3 owShadeWater(vec3 U, vec3 Nup, vec3 E, out vec4 debugOut)
 #endif
 
     // reflection, eq. 6 / 15 (under water the reflection pass already holds the water's tint)
-    // the lookup point: U + c R (thesis), or the ray's hit on the plane above (DeepWater, from above)
-    float c = below ? osgWater_UnderwaterScale : osgWater_ReflectionScale;
-#if defined(OSGWATER_REFLECTION_PLANE) && !defined(OSGWATER_EYE_BELOW)
-    vec4 reflP = owPlanePoint(U, Rr, osgWater_Level + osgWater_LookupPlanes.x);
-#else
-    vec4 reflP = vec4(U + c * Rr, 1.0);
-#endif
+    vec4 reflP = owReflectionLookupPoint(U, Rr, below);
     vec4 debugRefl = vec4(reflP.xyz, reflP.w > 0.5 ? 2.0 : 3.0);
     // the surroundings above the water, for reflections seen from above
 #if defined(OSGWATER_ENVIRONMENT) && !defined(OSGWATER_EYE_BELOW)

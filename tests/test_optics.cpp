@@ -177,6 +177,128 @@ TEST(Optics, IterativeSearchNeverWorseWithMoreSteps)
     }
 }
 
+namespace {
+// Walls for the mirror search: planes dot(n, x) = c clipped to a box, seen by a camera at the
+// origin of its eye space; the lookup answers the nearest wall along the camera ray through P.
+struct Wall {
+    glm::vec3 n;
+    float c;
+    glm::vec3 lo, hi;
+};
+struct Walls {
+    std::vector<Wall> walls;
+    DepthSample operator()(const glm::vec3& P) const
+    {
+        const glm::vec3 d = glm::normalize(P);
+        float best = INFINITY;
+        for (const Wall& w : walls) {
+            const float den = glm::dot(w.n, d);
+            if (std::fabs(den) < 1e-9f) continue;
+            const float t = w.c / den;
+            const glm::vec3 x = t * d;
+            if (t > 0.0f && t < best && glm::all(glm::greaterThanEqual(x, w.lo)) && glm::all(glm::lessThanEqual(x, w.hi)))
+                best = t;
+        }
+        if (!std::isfinite(best)) return { false, 0.0f };
+        return { true, (best * d).z };
+    }
+    // the exact first hit of U + s R
+    bool hit(const glm::vec3& U, const glm::vec3& R, glm::vec3& X) const
+    {
+        float best = INFINITY;
+        for (const Wall& w : walls) {
+            const float s = (w.c - glm::dot(w.n, U)) / glm::dot(w.n, R);
+            const glm::vec3 x = U + s * R;
+            if (s > 0.0f && s < best && glm::all(glm::greaterThanEqual(x, w.lo)) && glm::all(glm::lessThanEqual(x, w.hi)))
+                best = s;
+        }
+        if (!std::isfinite(best)) return false;
+        X = U + best * R;
+        return true;
+    }
+};
+const glm::vec3 kEverywhere(1e9f);
+
+// the reflection pass's eye space: looking along -Z; a wall 30 m ahead; the water's points U some
+// metres ahead and 2 m below the eye; each mirror ray leaves U tilted by the waves
+glm::vec3 tiltedRay(float ax, float ay) { return glm::normalize(glm::vec3(ax, 0.15f + ay, -1.0f)); }
+}
+
+TEST(Optics, MirrorSearchFindsTheWallThatWavesTurnTheRayTo)
+{
+    const Walls scene{ { Wall{ glm::vec3(0, 0, -1), 30.0f, -kEverywhere, kEverywhere } } };
+    const DepthLookup lookup = std::cref(scene);
+    double worst = 0.0;
+    for (float ux = -3.0f; ux <= 3.0f; ux += 1.5f)
+        for (float ax = -0.3f; ax <= 0.31f; ax += 0.15f)
+            for (float ay = -0.1f; ay <= 0.31f; ay += 0.1f) {
+                const glm::vec3 U(ux, -2.0f, -8.0f), R = tiltedRay(ax, ay);
+                glm::vec3 X;
+                ASSERT_TRUE(scene.hit(U, R, X));
+                const BottomHit h = mirrorSearch(U, R, 3, lookup, 0.01f);
+                ASSERT_TRUE(h.valid);
+                worst = std::max(worst, double(glm::length(h.W - X) / glm::length(X - U)));
+            }
+    EXPECT_LT(worst, 1e-3) << "relative to the hit's distance";
+}
+
+TEST(Optics, MirrorSearchSendsARayPastEverythingToTheSky)
+{
+    // a wall up to 4 m above the eye's height: rays that rise past its top meet nothing
+    const Walls scene{ { Wall{ glm::vec3(0, 0, -1), 30.0f, glm::vec3(-1e9f, -1e9f, -1e9f), glm::vec3(1e9f, 4.0f, 1e9f) } } };
+    const DepthLookup lookup = std::cref(scene);
+    const glm::vec3 U(0.0f, -2.0f, -8.0f);
+    EXPECT_FALSE(mirrorSearch(U, tiltedRay(0.0f, 0.5f), 3, lookup, 0.01f).valid); // over the top: sky
+    const BottomHit below = mirrorSearch(U, tiltedRay(0.0f, 0.1f), 3, lookup, 0.01f);
+    ASSERT_TRUE(below.valid);
+    glm::vec3 X;
+    ASSERT_TRUE(scene.hit(U, tiltedRay(0.0f, 0.1f), X));
+    EXPECT_LT(glm::length(below.W - X), 0.03f);
+    const DepthLookup sky = [](const glm::vec3&) { return DepthSample{ false, 0.0f }; };
+    EXPECT_FALSE(mirrorSearch(U, tiltedRay(0.0f, 0.1f), 3, sky, 0.01f).valid);
+}
+
+TEST(Optics, MirrorSearchIgnoresWhatLiesUnderTheFloorPlane)
+{
+    // a shelf 0.1 m under U's height in front of the wall (the band the pass keeps beyond the
+    // level for the crests) hides the wall from U's line of sight; the floor plane at U's height
+    // (eye space y >= -2.05 here) lets the search see through it
+    const Walls scene{ { Wall{ glm::vec3(0, 0, -1), 30.0f, -kEverywhere, kEverywhere },
+                         Wall{ glm::vec3(0, 1, 0), -2.1f, glm::vec3(-1e9f, -1e9f, -1e9f), glm::vec3(1e9f, 1e9f, -6.0f) } } };
+    const DepthLookup lookup = std::cref(scene);
+    const glm::vec3 U(0.0f, -2.0f, -8.0f), R = tiltedRay(0.1f, 0.05f);
+    glm::vec3 X;
+    ASSERT_TRUE(Walls{ { scene.walls[0] } }.hit(U, R, X));
+    const BottomHit fooled = mirrorSearch(U, R, 3, lookup, 0.01f);
+    EXPECT_GT(glm::length(fooled.W - X), 1.0f) << "without the floor the shelf is taken for the hit";
+    const BottomHit h = mirrorSearch(U, R, 3, lookup, 0.01f, glm::vec4(0, 1, 0, 2.05f));
+    ASSERT_TRUE(h.valid);
+    EXPECT_LT(glm::length(h.W - X) / glm::length(X - U), 1e-3f);
+}
+
+TEST(Optics, MirrorSearchClosesInOnANearWallItOvershot)
+{
+    // the line of sight through U sees the far wall 30 m out; the ray meets a low near wall (a
+    // bank) 4 m from U: the first guess lies behind the bank, and regula falsi comes back to it
+    const Walls scene{ { Wall{ glm::vec3(0, 0, -1), 30.0f, -kEverywhere, kEverywhere },
+                         Wall{ glm::vec3(0, 0, -1), 12.0f, glm::vec3(-1e9f, -1e9f, -1e9f), glm::vec3(1e9f, -1.2f, 1e9f) } } };
+    const DepthLookup lookup = std::cref(scene);
+    const glm::vec3 U(0.0f, -2.0f, -8.0f), R = tiltedRay(0.05f, 0.0f);
+    glm::vec3 X;
+    ASSERT_TRUE(scene.hit(U, R, X));
+    ASSERT_LT(glm::length(X - U), 5.0f);
+    float previous = INFINITY;
+    for (int steps : { 3, 5, 8 }) {
+        const BottomHit h = mirrorSearch(U, R, steps, lookup, 0.001f);
+        ASSERT_TRUE(h.valid) << steps;
+        const float err = glm::length(h.W - X);
+        RecordProperty("steps_" + std::to_string(steps), std::to_string(err));
+        EXPECT_LE(err, previous + 1e-4f) << steps;
+        previous = err;
+    }
+    EXPECT_LT(previous, 0.01f) << "metres, with 8 steps";
+}
+
 TEST(Optics, SkyIsAMissNotABottom)
 {
     DepthLookup sky = [](const glm::vec3&) { return DepthSample{ false, 0.0f }; };

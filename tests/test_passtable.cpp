@@ -61,8 +61,9 @@ TEST(PassTable, RenderOrdersAndBinsFollowTheTable)
     }
     // the units the scene and water programs sample at once never collide
     const std::set<int> units = { UNIT_BASE, UNIT_REFLECTION, UNIT_REFRACTION, UNIT_REFRACTION_DEPTH, UNIT_CAUSTICS,
-                                  UNIT_SUN_DEPTH, UNIT_ENVIRONMENT };
-    EXPECT_EQ(units.size(), 7u);
+                                  UNIT_SUN_DEPTH, UNIT_ENVIRONMENT, UNIT_REFLECTED_CAUSTICS, UNIT_REFLECTED_SUN_DEPTH,
+                                  UNIT_REFLECTION_DEPTH };
+    EXPECT_EQ(units.size(), 10u);
 }
 
 TEST(PassTable, EverythingRunsWithTheWaterInViewAndEveryEffectOn)

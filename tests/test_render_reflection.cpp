@@ -4,9 +4,12 @@
 #include <osgWater/WaterNode>
 #include <osgWater/Optics>
 #include <osgWater/WaterTypes>
+#include <osgWater/WaterSurface>
+#include <osgWater/ViewPasses>
 #include <algorithm>
 #include <functional>
 #include <cmath>
+#include <vector>
 
 using namespace testing_gl;
 using namespace osgWater;
@@ -132,6 +135,101 @@ TEST(RenderReflection, PlaneOffsetLooksUpTheMirrorRaysHitOnThePlane)
         }
     EXPECT_GT(checked, 500);
     EXPECT_LT(worst, 1e-3) << "relative to the lookup distance";
+}
+
+namespace {
+
+// Where the reflection lookup (debug output) lands against the exact hit of each pixel's mirror
+// ray on a red wall, over water with waves, in reflection-texture texels. The eye ray meets the
+// analytic surface (the drawn grid is fine enough to be within a millimetre of it), the mirror ray
+// leaves it along the analytic normal, and its hit on the wall's plane is closed form.
+struct MirrorLookupErrors {
+    std::vector<double> texels;
+    int notPoints = 0; //!< pixels whose ray meets the wall but whose lookup is not a point
+};
+
+MirrorLookupErrors mirrorLookupOnAWall(WaterSettings::ReflectionLookup lookup, bool eyeBelow)
+{
+    MirrorLookupErrors out;
+    Harness h(240, 180);
+    if (!h.ok()) return out;
+    osg::ref_ptr<WaterNode> water = new WaterNode;
+    WaterSurface* surface = water->getSurface();
+    surface->setSize(60.0f);
+    surface->setResolution(385); // 0.16 m between vertices: the grid within 0.5 mm of the waves
+    surface->setWaves({ makeWave(0.3f, 1.0f, 3.0f, 0.04f), makeWave(1.0f, -0.4f, 2.2f, 0.025f) });
+    water->getSettings()->setReflectionLookup(lookup);
+    water->getSettings()->setFovExtension(1.5f, 1.5f, 10.0f);
+    water->setDebugOutput(DEBUG_REFLECTION_LOOKUP);
+    // the wall: y = 12, x in [-8, 8], from 0.3 m to 5 m on the eye's side of the water
+    const double s = eyeBelow ? -1.0 : 1.0, y0 = 12.0, x0 = 8.0, z0 = 0.3 * s, z1 = 5.0 * s;
+    water->addChild(emissiveQuad(osg::Vec3(-x0, y0, z0), osg::Vec3(x0, y0, z0), osg::Vec3(x0, y0, z1), osg::Vec3(-x0, y0, z1),
+                                 osg::Vec4(1, 0, 0, 1)));
+    h.setScene(water.get());
+    const osg::Vec3d eye(0, 0, 2.0 * s);
+    h.lookAt(eye, osg::Vec3d(0, 12, 0));
+    const double t = 0.0;
+    h.frame(t);
+    ViewPasses* passes = water->getViewPasses(h.camera());
+    if (!passes) return out;
+    const osg::Matrixd reflMVP = passes->getReflectionCamera()->getViewProjection();
+    const int size = passes->getReflectionCamera()->getTargetWidth();
+    auto texel = [&](const osg::Vec3d& p) {
+        const osg::Vec4d c = osg::Vec4d(p, 1.0) * reflMVP;
+        return osg::Vec2d((c.x() / c.w() * 0.5 + 0.5) * size, (c.y() / c.w() * 0.5 + 0.5) * size);
+    };
+    osg::ref_ptr<osg::Image> img = h.readColor();
+    const osg::Matrixd inv = osg::Matrixd::inverse(h.camera()->getViewMatrix() * h.camera()->getProjectionMatrix());
+    for (int y = 0; y < h.height(); y += 2)
+        for (int x = 0; x < h.width(); x += 2) {
+            const double nx = (x + 0.5) / h.width() * 2 - 1, ny = (y + 0.5) / h.height() * 2 - 1;
+            osg::Vec3d d = osg::Vec3d(nx, ny, 1) * inv - osg::Vec3d(nx, ny, -1) * inv;
+            d.normalize();
+            double ratio;
+            osg::Vec3d U, N;
+            if (!surface->intersect(eye, eye + d * 200.0, t, ratio, U, N)) continue;
+            if (N * d > 0.0) N = -N;
+            const osg::Vec3d R = d - N * (2.0 * (d * N));
+            if (!(R.y() > 1e-3)) continue;
+            const osg::Vec3d X = U + R * ((y0 - U.y()) / R.y());
+            // the wall's inside, a margin from its edges (the texels there mix wall and sky)
+            if (std::fabs(X.x()) > x0 - 0.3 || s * X.z() < 0.6 || s * X.z() > 4.7) continue;
+            const float* c = pixel(img.get(), x, y);
+            if (!(std::fabs(c[3] - 2.0f) < 1e-3f)) { ++out.notPoints; continue; }
+            out.texels.push_back((texel(osg::Vec3d(c[0], c[1], c[2])) - texel(X)).length());
+        }
+    std::sort(out.texels.begin(), out.texels.end());
+    return out;
+}
+
+void expectMirrorSearchFindsTheWall(bool eyeBelow)
+{
+    Harness probe(8, 8);
+    REQUIRE_GL(probe);
+    const MirrorLookupErrors search = mirrorLookupOnAWall(WaterSettings::REFLECTION_SEARCH, eyeBelow);
+    const MirrorLookupErrors offset = mirrorLookupOnAWall(WaterSettings::REFLECTION_OFFSET, eyeBelow);
+    ASSERT_GT(search.texels.size(), 1000u);
+    const double median = search.texels[search.texels.size() / 2], worst = search.texels.back();
+    // a ray whose flat-water line of sight passes over the wall's top, and whose far end does too,
+    // is taken for the sky: a few pixels along the top edge
+    EXPECT_LE(search.notPoints, int(search.texels.size() / 500)) << "of " << search.texels.size();
+    EXPECT_LT(median, 0.1) << "texels";
+    EXPECT_LT(worst, 0.5) << "texels";
+    // the thesis's U + c R looks up a point a metre from the water: tens of texels from the wall
+    ASSERT_GT(offset.texels.size(), 1000u);
+    EXPECT_GT(offset.texels[offset.texels.size() / 2], 10.0) << "texels";
+}
+
+}
+
+TEST(RenderReflection, SearchFindsTheMirrorImageOfAWallOverWaves)
+{
+    expectMirrorSearchFindsTheWall(false);
+}
+
+TEST(RenderReflection, SearchFindsTheMirrorImageOfAWallUnderWaterSeenFromBelow)
+{
+    expectMirrorSearchFindsTheWall(true);
 }
 
 namespace {

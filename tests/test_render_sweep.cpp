@@ -69,6 +69,7 @@ void buildScene(WaterNode* water, int kind)
 struct Group {
     int scene, steps; // steps 0: one-step lookup (or the plane offset, with planeLookups)
     bool planeLookups; // the plane-offset refraction (when steps is 0) and reflection lookups
+    bool offsetReflection; // without planeLookups: the thesis's offset reflection lookup, else the search
     WaterSettings::FresnelModel fresnel;
     WaterSettings::UnderwaterModel underwater;
     int gather;       // -1 caustics off, else a CausticsGather
@@ -112,6 +113,7 @@ std::vector<Group> groups()
         x.scene = int(i % NUM_SCENES);
         x.steps = int((i * 7) % 9);
         x.planeLookups = i % 3 == 1;
+        x.offsetReflection = i % 2 == 0;
         x.fresnel = pick(fresnel, i / 5);
         x.underwater = pick(under, i / 3);
         x.gather = pick(gathers, i / 2);
@@ -170,7 +172,7 @@ std::string describe(const Group& g, const Config& c)
     std::ostringstream s;
     s << sceneName(g.scene) << ", "
       << (g.steps ? "iterative " + std::to_string(g.steps) : std::string(g.planeLookups ? "plane" : "one-step"))
-      << (g.planeLookups ? ", plane reflection" : "")
+      << (g.planeLookups ? ", plane reflection" : g.offsetReflection ? ", offset reflection" : ", reflection search")
       << ", fresnel " << g.fresnel << ", underwater " << g.underwater << ", gather " << g.gather << (g.areaMesh ? " (mesh)" : "") << (g.reflective ? " (reflective)" : "") << (g.tile > 0.0f ? " (tiled)" : "") << (g.environment ? ", environment map" : "") << ", textures "
       << g.textureSize << ", photons " << g.photonGrid << ", viewport " << g.viewport << ", rotation " << g.rotation
       << ", glow " << g.glow << ", debug " << g.debug << "; eye height " << c.eyeHeight << ", pitch " << c.pitch
@@ -184,7 +186,8 @@ void apply(WaterNode* water, const Group& g)
     WaterSettings* s = water->getSettings();
     s->setRefractionLookup(g.steps ? WaterSettings::ITERATIVE
                            : g.planeLookups ? WaterSettings::PLANE_OFFSET : WaterSettings::ONE_STEP);
-    s->setReflectionLookup(g.planeLookups ? WaterSettings::REFLECTION_PLANE : WaterSettings::REFLECTION_OFFSET);
+    s->setReflectionLookup(g.planeLookups ? WaterSettings::REFLECTION_PLANE
+                           : g.offsetReflection ? WaterSettings::REFLECTION_OFFSET : WaterSettings::REFLECTION_SEARCH);
     s->setSearchSteps(std::max(g.steps, 1));
     s->setFresnelModel(g.fresnel);
     s->setUnderwaterModel(g.underwater);

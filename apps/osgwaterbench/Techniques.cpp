@@ -17,6 +17,7 @@ std::vector<Technique> allTechniques()
                          s.setSearchSteps(steps);
                      } });
     t.push_back({ "refraction-plane", [](WaterSettings& s) { s.setRefractionLookup(WaterSettings::PLANE_OFFSET); } });
+    t.push_back({ "reflection-offset", [](WaterSettings& s) { s.setReflectionLookup(WaterSettings::REFLECTION_OFFSET); } });
     t.push_back({ "reflection-plane", [](WaterSettings& s) { s.setReflectionLookup(WaterSettings::REFLECTION_PLANE); } });
     t.push_back({ "environment-map", [](WaterSettings& s) { s.setEnvironmentMapEnabled(true); } });
     t.push_back({ "no-rotation", [](WaterSettings& s) { s.setRefractionCameraRotation(false); } });

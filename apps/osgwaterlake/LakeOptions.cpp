@@ -49,7 +49,8 @@ void LakeOptions::describe(osg::ApplicationUsage& u)
     u.addCommandLineOption("--floaters", "Show the buoy and the boat riding the waves (key b)");
     u.addCommandLineOption("--pond", "Show a garden pond on the north rim, a second water above the lake (key p)");
     u.addCommandLineOption("--lookup <one-step|iterative|plane>", "Refraction lookup technique");
-    u.addCommandLineOption("--reflection-lookup <offset|plane>", "Reflection lookup technique");
+    u.addCommandLineOption("--reflection-lookup <search|offset|plane>", "Reflection lookup technique (default search)");
+    u.addCommandLineOption("--calm", "Flat water: the scene's waves off");
     u.addCommandLineOption("--planes <height> <depth>", "Plane-offset lookups' planes, metres from the level (0: from the scene)");
     u.addCommandLineOption("--steps <n>", "Candidates of the iterative search (1-8)");
     u.addCommandLineOption("--fresnel <schlick|power|exact|reciprocal>", "Fresnel model");
@@ -110,7 +111,7 @@ bool LakeOptions::read(osg::ArgumentParser& args)
     int n;
     if (!readEnumOption(args, "--lookup", "one-step|iterative|plane", WaterSettings::refractionLookupFromName,
                         &WaterSettings::setRefractionLookup, _setters) ||
-        !readEnumOption(args, "--reflection-lookup", "offset|plane", WaterSettings::reflectionLookupFromName,
+        !readEnumOption(args, "--reflection-lookup", "search|offset|plane", WaterSettings::reflectionLookupFromName,
                         &WaterSettings::setReflectionLookup, _setters) ||
         !readEnumOption(args, "--fresnel", "schlick|power|exact|reciprocal", WaterSettings::fresnelModelFromName,
                         &WaterSettings::setFresnelModel, _setters))
@@ -149,6 +150,7 @@ bool LakeOptions::read(osg::ArgumentParser& args)
         return false;
     if (args.read("--supersample")) _setters.push_back([](WaterSettings& w) { w.setCausticsSupersampling(true); });
     args.read("--caustics-tile", causticsTile);
+    if (args.read("--calm")) calm = true;
     if (args.read("--reflective-caustics")) _setters.push_back([](WaterSettings& w) { w.setReflectiveCaustics(true); });
     if (args.read("--caustics-size", n)) _setters.push_back([n](WaterSettings& w) { w.setCausticsResolution(n); });
     if (args.read("--photons", n)) _setters.push_back([n](WaterSettings& w) { w.setPhotonGridSize(n); });
@@ -175,6 +177,7 @@ void LakeOptions::apply(osgWater::WaterNode& water) const
     if (const osgWater::WaterType* type = osgWater::findWaterType(waterType)) osgWater::applyWaterType(s, *type);
     else s.setWaterModel(WaterSettings::WATER_THESIS);
     for (const auto& set : _setters) set(s);
+    if (calm) water.getSurface()->setWaves({});
     if (causticsTile > 0.0) {
         s.setCausticsTileSize(float(causticsTile));
         osgWater::WaterSurface& surface = *water.getSurface();

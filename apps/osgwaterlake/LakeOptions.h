@@ -15,6 +15,7 @@ struct LakeOptions {
     bool underwater = false;
     double time = 10.0;            // simulation time of the first frame
     double causticsTile = 0.0;     // tileable caustics: the tile's side, the waves snapped to it (0: off)
+    bool calm = false;             // the scene's waves off
     bool headless = false;
     int frames = 60;
     bool compare = true;           // headless: also time the scene without water

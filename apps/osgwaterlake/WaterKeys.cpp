@@ -14,9 +14,10 @@ bool WaterKeys::handle(const osgGA::GUIEventAdapter& ea, osgGA::GUIActionAdapter
                               : s.getRefractionLookup() == WaterSettings::PLANE_OFFSET ? WaterSettings::ONE_STEP
                                                                                       : WaterSettings::ITERATIVE);
         return true;
-    case 'e':
-        s.setReflectionLookup(s.getReflectionLookup() == WaterSettings::REFLECTION_OFFSET ? WaterSettings::REFLECTION_PLANE
-                                                                                          : WaterSettings::REFLECTION_OFFSET);
+    case 'e': // search -> offset -> plane -> search
+        s.setReflectionLookup(s.getReflectionLookup() == WaterSettings::REFLECTION_SEARCH ? WaterSettings::REFLECTION_OFFSET
+                              : s.getReflectionLookup() == WaterSettings::REFLECTION_OFFSET ? WaterSettings::REFLECTION_PLANE
+                                                                                            : WaterSettings::REFLECTION_SEARCH);
         return true;
     case '+': case '=': s.setSearchSteps(std::min(s.getSearchSteps() + 1, 8)); return true;
     case '-': s.setSearchSteps(std::max(s.getSearchSteps() - 1, 1)); return true;

@@ -50,7 +50,7 @@ std::string checkSettings(const osgWater::WaterSettings& s)
     using W = osgWater::WaterSettings;
     auto outside = [](int v, int last) { return v < 0 || v > last; };
     if (outside(s.getFresnelModel(), W::FRESNEL_RECIPROCAL) || outside(s.getRefractionLookup(), W::PLANE_OFFSET) ||
-        outside(s.getReflectionLookup(), W::REFLECTION_PLANE) || outside(s.getCausticsGather(), W::GATHER_CPU) ||
+        outside(s.getReflectionLookup(), W::REFLECTION_SEARCH) || outside(s.getCausticsGather(), W::GATHER_CPU) ||
         outside(s.getCausticsMethod(), W::CAUSTICS_AREA_MESH) || outside(s.getUnderwaterModel(), W::UNDERWATER_THESIS))
         return "an enum setting holds a value it does not define";
     if (s.getSearchSteps() < 1 || s.getReflectionTextureSize() < 1 || s.getRefractionTextureSize() < 1 ||
