@@ -1,5 +1,5 @@
 #version 130
-#pragma import_defines(OSGWATER_GRID, OSGWATER_EYE_BELOW, OSGWATER_ONE_STEP, OSGWATER_REFRACTION_PLANE, OSGWATER_REFLECTION, OSGWATER_FRESNEL, OSGWATER_UNDERWATER, OSGWATER_NO_REFLECTION, OSGWATER_NO_REFRACTION, OSGWATER_SEARCH_STEPS, OSGWATER_ENVIRONMENT)
+#pragma import_defines(OSGWATER_GRID, OSGWATER_EYE_BELOW, OSGWATER_ONE_STEP, OSGWATER_REFRACTION_PLANE, OSGWATER_REFLECTION, OSGWATER_FRESNEL, OSGWATER_UNDERWATER, OSGWATER_NO_REFLECTION, OSGWATER_NO_REFRACTION, OSGWATER_SEARCH_STEPS, OSGWATER_ENVIRONMENT, OSGWATER_DEBUG)
 // The near-plane cap. Where the near plane lies on the other side of the surface than the eye,
 // the eye's ray met the surface before the near plane, which clipped that bit of surface away:
 // without this the frame would show the scene behind it untinted, or the clear colour. Here the
@@ -53,5 +53,6 @@ void main()
     vec3 N = vec3(0.0, 0.0, 1.0);
 #endif
     vec4 debugHit;
-    gl_FragColor = vec4(owShadeWater(S, N, -D, debugHit), 1.0);
+    vec3 color = owShadeWater(S, N, -D, debugHit);
+    gl_FragColor = owWaterFragment(S, color, debugHit);
 }

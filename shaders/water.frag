@@ -19,15 +19,5 @@ void main()
 #endif
     vec4 debugHit;
     vec3 color = owShadeWater(U, N, E, debugHit);
-#if defined(OSGWATER_DEBUG) && OSGWATER_DEBUG == 4
-#ifdef OSGWATER_GRID
-    gl_FragColor = vec4(U.xy, waterHeight(U.xy), 2.0); // the analytic surface at this fragment
-#else
-    gl_FragColor = vec4(U, 2.0);
-#endif
-#elif defined(OSGWATER_DEBUG)
-    gl_FragColor = debugHit;
-#else
-    gl_FragColor = vec4(color, 1.0);
-#endif
+    gl_FragColor = owWaterFragment(U, color, debugHit);
 }

@@ -240,3 +240,20 @@ vec3 owShadeWater(vec3 U, vec3 Nup, vec3 E, out vec4 debugOut)
 #endif
     return refrCol + F * (reflCol - refrCol); // eq. 9
 }
+
+// What a fragment of the water writes at U: its colour, or the debug output (OSGWATER_DEBUG 4: the
+// analytic surface under U; else what owShadeWater reported), the same for the surface and the cap.
+vec4 owWaterFragment(vec3 U, vec3 color, vec4 debugHit)
+{
+#if defined(OSGWATER_DEBUG) && OSGWATER_DEBUG == 4
+#ifdef OSGWATER_GRID
+    return vec4(U.xy, waterHeight(U.xy), 2.0);
+#else
+    return vec4(U, 2.0);
+#endif
+#elif defined(OSGWATER_DEBUG)
+    return debugHit;
+#else
+    return vec4(color, 1.0);
+#endif
+}
