@@ -187,6 +187,35 @@ TEST(BenchMetric, WrongIndexOfRefractionReportsALargeError)
     EXPECT_GT(q.over2, 0.5);
 }
 
+TEST(BenchMetric, AReflectionLookupOffTheMirrorRaysHitReportsALargeError)
+{
+    // a wall 10 m ahead standing in waves: the mirror rays that meet it are where the metric can
+    // tell a lookup on the hit (the search) from one a few metres off it (the thesis's offset; on
+    // flat water every point of a mirror ray falls in the same texel, so only waves tell them apart)
+    FlatScene sc;
+    REQUIRE_GL(sc.probe);
+    sc.surface->setResolution(257);
+    sc.surface->setSize(60.0f);
+    sc.surface->setWaves({ testing_gl::makeWave(0.3f, 1.0f, 3.0f, 0.04f) });
+    sc.water->addChild(testing_gl::emissiveQuad(osg::Vec3(-30, 10, -0.5f), osg::Vec3(30, 10, -0.5f), osg::Vec3(30, 10, 8),
+                                                osg::Vec3(-30, 10, 8), osg::Vec4(1, 0, 0, 1)));
+    ViewErrors search = sc.measure(1.333);
+    ASSERT_GT(search.reflectionShownTexels.size(), 8000u);
+    // nothing hides the wall from the mirrored eye: only rays the waves send back under the level
+    EXPECT_LT(search.reflectionNotShown, search.reflectionShownTexels.size() / 20);
+    const Quantiles s = quantiles(search.reflectionShownTexels);
+    RecordProperty("search", std::to_string(s.median) + " / " + std::to_string(s.p99) + " / " + std::to_string(s.max) + " of " + std::to_string(s.n) + ", not shown " + std::to_string(search.reflectionNotShown));
+    EXPECT_LT(s.median, 0.1);
+    EXPECT_LT(s.p99, 1.0);
+    sc.water->getSettings()->setReflectionLookup(osgWater::WaterSettings::REFLECTION_OFFSET);
+    sc.water->getSettings()->setReflectionScale(3.0f);
+    ViewErrors offset = sc.measure(1.333);
+    ASSERT_GT(offset.reflectionShownTexels.size(), 8000u);
+    const Quantiles o = quantiles(offset.reflectionShownTexels);
+    RecordProperty("offset", std::to_string(o.median) + " / " + std::to_string(o.p99));
+    EXPECT_GT(o.median, 5.0);
+}
+
 TEST(Osgwaterbench, QuickRunWritesValidJson)
 {
     const std::string out = std::string(OSGWATER_TEST_TMP) + "/bench-quick";

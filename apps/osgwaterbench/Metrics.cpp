@@ -97,7 +97,15 @@ ViewErrors measureView(const ReferenceImage& ref, const Estimate& e, const RayCa
                 const double w = l.w() > 2.5f ? 0.0 : 1.0;
                 if (l.w() > 1.5f && texel(e.reflectionMVP, osg::Vec4d(l.x(), l.y(), l.z(), w), e.reflectionSize, est) &&
                     texel(e.reflectionMVP, target, e.reflectionSize, exact))
-                    v.reflectionTexels.push_back(float((est - exact).length()));
+                {
+                    const float texels = float((est - exact).length());
+                    v.reflectionTexels.push_back(texels);
+                    // shown: in the pass's view and on its texture
+                    const bool onTexture = exact.x() >= 0.0 && exact.y() >= 0.0 && exact.x() <= e.reflectionSize &&
+                                           exact.y() <= e.reflectionSize;
+                    if ((r.flags & PixelRef::REFLECTION_SHOWN) && onTexture) v.reflectionShownTexels.push_back(texels);
+                    else ++v.reflectionNotShown;
+                }
             }
             if (!e.bottom.valid()) continue;
             const bool tirRef = r.flags & PixelRef::TIR, tirEst = b.w() < -1.5f;

@@ -33,6 +33,8 @@ struct ViewErrors {
     std::vector<float> refractionPx;     //!< apparent-position error of the refracted point, screen pixels
     std::vector<float> refractionM;      //!< the same in metres
     std::vector<float> reflectionTexels; //!< reflection lookup vs the mirror ray's hit, reflection texels
+    std::vector<float> reflectionShownTexels; //!< the same where the reflection pass has the hit in view
+    size_t reflectionNotShown = 0;       //!< pixels measured whose hit the reflection pass cannot show
     std::vector<float> fresnel;          //!< |F - exact|
     size_t waterPixels = 0;              //!< reference: pixels whose eye ray meets the water first
     size_t misses = 0;                   //!< reference refracted ray hits, the renderer found nothing

@@ -72,7 +72,22 @@ PixelTrace Reference::trace(const glm::dvec3& eye, const glm::dvec3& dir) const
     if (!p.tir) p.refracted = _scene.intersect(p.U, p.R, eps);
     p.reflected = _scene.intersect(p.U, p.Rr, eps);
     p.underwaterPath = p.below ? w.t : (p.refracted.hit ? p.refracted.t : 0.0);
+    p.reflectionShown = mirrorShows(eye, p);
     return p;
+}
+
+bool Reference::mirrorShows(const glm::dvec3& eye, const PixelTrace& p) const
+{
+    const double level = _surface.getLevel(), side = p.below ? -1.0 : 1.0;
+    const glm::dvec3 mirrored(eye.x, eye.y, 2.0 * level - eye.z);
+    // the mirrored eye's line of sight to the hit (t = 1 at it), or along the ray to the sky
+    const glm::dvec3 d = p.reflected.hit ? p.reflected.point - mirrored : p.Rr;
+    if (p.reflected.hit && side * (p.reflected.point.z - level) < 0.0) return false;
+    if (!(side * d.z > 0.0)) return false; // it never reaches the pass's side
+    // from where it crosses the level (at the eye already when the eye sits between a trough and the level)
+    const double t0 = std::max((level - mirrored.z) / d.z, 0.0);
+    const double t1 = p.reflected.hit ? 1.0 - 1e-6 : 1e30;
+    return !_scene.intersect(mirrored, d, t0, t1).hit;
 }
 
 namespace {
@@ -135,6 +150,7 @@ ReferenceImage traceView(const Reference& ref, const osg::Matrixd& viewMatrix, c
             r.fresnel = float(p.fresnel);
             r.Y = glm::vec3(p.reflected.hit ? p.reflected.point : p.Rr);
             if (p.reflected.hit) r.flags |= PixelRef::REFLECTED_HIT;
+            if (p.reflectionShown) r.flags |= PixelRef::REFLECTION_SHOWN;
             if (!p.refracted.hit) continue;
             r.flags |= PixelRef::REFRACTED_HIT;
             r.X = glm::vec3(p.refracted.point);

@@ -33,6 +33,7 @@ struct PixelTrace {
     Hit refracted, reflected;
     double fresnel = 0.0;
     double underwaterPath = 0.0; //!< from above: |X - U|; from below: |eye - U|
+    bool reflectionShown = false; //!< the reflection pass can show the mirror ray's hit (Reference::mirrorShows)
 };
 
 class Reference
@@ -48,6 +49,11 @@ public:
 
 private:
     glm::dvec3 normalAt(const Hit& h) const;
+    //! Whether the reflection pass, the eye mirrored in the level drawing the eye's side of it, has
+    //! the mirror ray's hit in view: the hit (for a miss, the sky along the ray) lies on that side and
+    //! is the first thing on the mirrored eye's line of sight there. Where it is not, no lookup in
+    //! the reflection texture can find it (hidden behind a shore, or a ray sent back under the level).
+    bool mirrorShows(const glm::dvec3& eye, const PixelTrace& p) const;
     const RayCaster& _scene;
     const RayCaster& _water;
     const osgWater::WaterSurface& _surface;
@@ -57,7 +63,8 @@ private:
 
 //! A view's reference, compact, per pixel (row 0 at the bottom, as GL reads back).
 struct PixelRef {
-    enum : uint8_t { WATER = 1, BELOW = 2, TIR = 4, REFRACTED_HIT = 8, REFLECTED_HIT = 16, JACOBIAN = 32 };
+    enum : uint8_t { WATER = 1, BELOW = 2, TIR = 4, REFRACTED_HIT = 8, REFLECTED_HIT = 16, JACOBIAN = 32,
+                     REFLECTION_SHOWN = 64 };
     uint8_t flags = 0;
     glm::vec3 U{ 0.0f }, X{ 0.0f }, Y{ 0.0f }; //!< Y: the mirror ray's hit, or its direction on a miss
     float fresnel = 0.0f;

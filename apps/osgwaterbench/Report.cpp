@@ -47,6 +47,8 @@ nlohmann::json toJson(const Record& r)
     j["refraction_px_over2_share"] = number(r.refractionPx.over2);
     addQuantiles(j, "refraction_m", r.refractionM);
     addQuantiles(j, "reflection_texels", r.reflectionTexels);
+    addQuantiles(j, "reflection_shown_texels", r.reflectionShownTexels);
+    j["reflection_not_shown"] = r.reflectionNotShown;
     addQuantiles(j, "fresnel_error", r.fresnelError);
     j["refraction_misses"] = r.misses;
     j["tir_mismatch"] = r.tirMismatch;
@@ -262,6 +264,13 @@ bool writeDocs(const std::string& dir, const RunInfo& info, const std::vector<Re
            << status(def->refractionPx.median, def->refractionPx.median <= 0.25) << " |\n";
         md << "| default refraction p99 ≤ 2 px | " << fmt(def->refractionPx.p99, 2, " px") << " | "
            << status(def->refractionPx.p99, def->refractionPx.p99 <= 2.0) << " |\n";
+        md << "| default reflection median ≤ 0.5 texel | " << fmt(def->reflectionTexels.median, 3, " texels") << " | "
+           << status(def->reflectionTexels.median, def->reflectionTexels.median <= 0.5) << " |\n";
+        md << "| default reflection p99 ≤ 4 texels | " << fmt(def->reflectionTexels.p99, 1, " texels") << " | "
+           << status(def->reflectionTexels.p99, def->reflectionTexels.p99 <= 4.0) << " |\n";
+        md << "| the same where the reflection pass shows the hit (" << pct(1.0 - def->reflectionNotShownShare)
+           << " of the pixels) | " << fmt(def->reflectionShownTexels.p99, 1, " texels") << " | "
+           << status(def->reflectionShownTexels.p99, def->reflectionShownTexels.p99 <= 4.0) << " |\n";
     }
 
     // the presets: speed from the ablation, errors from the techniques
@@ -313,32 +322,44 @@ bool writeDocs(const std::string& dir, const RunInfo& info, const std::vector<Re
        << "refraction texture shows at the pixel and the exact refracted hit, in metres and in screen "
        << "pixels (the offset on screen that, to first order, moves the exact hit onto the shown point). "
        << "Reflection error: the lookup point against the mirror ray's exact hit, in reflection-texture "
-       << "texels. Caustics: relative RMSE of the caustics texture against photon tracing (blocks of "
+       << "texels; \"shown\": only the pixels whose hit the reflection pass has in view (seen from the "
+       << "mirrored eye, on the eye's side of the level: not behind a shore, not a ray the waves send back "
+       << "under the level), which no lookup in that texture can find otherwise; \"not shown\": the share "
+       << "of the others. Coverage: water pixels of the reference the render's water does not cover. "
+       << "Caustics: relative RMSE of the caustics texture against photon tracing (blocks of "
        << "texels about 1.2 m on a side, whatever the texture's window and resolution; the reference's own "
        << "counting noise in brackets).\n\n"
        << "| technique | ratio | frame ms | refr. px median | p95 | p99 | max | > 2 px | refr. m median "
-          "| refl. texels median | p99 | Fresnel err. median | max | caustics RMSE | NaN px |\n"
-       << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+          "| refl. texels median | p99 | shown p99 | not shown | Fresnel err. median | max | caustics RMSE "
+          "| coverage | NaN px |\n"
+       << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
     for (const Summary& s : summaries)
         md << "| " << s.technique << " | " << fmt(s.ratioInView, 2, "×") << " | " << fmt(s.frameMs, 1) << " | "
            << fmt(s.refractionPx.median, 3) << " | " << fmt(s.refractionPx.p95, 2) << " | " << fmt(s.refractionPx.p99, 2)
            << " | " << fmt(s.refractionPx.max, 1) << " | " << pct(s.refractionPx.over2) << " | "
            << fmt(s.refractionM.median, 4) << " | " << fmt(s.reflectionTexels.median, 2) << " | "
-           << fmt(s.reflectionTexels.p99, 1) << " | " << fmt(s.fresnel.median, 4) << " | " << fmt(s.fresnel.max, 3)
+           << fmt(s.reflectionTexels.p99, 1) << " | " << fmt(s.reflectionShownTexels.p99, 1) << " | "
+           << pct(s.reflectionNotShownShare) << " | " << fmt(s.fresnel.median, 4) << " | " << fmt(s.fresnel.max, 3)
            << " | " << pct(s.causticsRmse) << (std::isfinite(s.causticsNoise) ? " (" + pct(s.causticsNoise) + ")" : "")
-           << " | " << s.nanPixels << " |\n";
+           << " | " << pct(s.coverageMismatchShare) << " | " << s.nanPixels << " |\n";
 
     md << "\n## Views (default technique)\n\n"
        << "| view | eye | water px | frame ms | plain ms | ratio | refr. px median | p99 | max | refr. m median "
-          "| refl. texels median | Fresnel err. median | caustics RMSE | NaN px |\n"
-       << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+          "| refl. texels median | p99 | shown p99 | not shown | Fresnel err. median | caustics RMSE | coverage "
+          "| NaN px |\n"
+       << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
     for (const Record& r : records) {
         if (r.technique != "default") continue;
         md << "| " << r.view << " | " << (r.eyeBelow ? "under water" : "above") << " | " << r.waterPixels << " | "
            << fmt(r.frameMs, 1) << " | " << fmt(r.plainMs, 1) << " | " << fmt(r.ratio, 2, "×") << " | "
            << fmt(r.refractionPx.median, 3) << " | " << fmt(r.refractionPx.p99, 2) << " | " << fmt(r.refractionPx.max, 1)
            << " | " << fmt(r.refractionM.median, 4) << " | " << fmt(r.reflectionTexels.median, 2) << " | "
-           << fmt(r.fresnelError.median, 4) << " | " << pct(r.causticsErrors.relativeRmse) << " | " << r.nanPixels << " |\n";
+           << fmt(r.reflectionTexels.p99, 1) << " | " << fmt(r.reflectionShownTexels.p99, 1) << " | "
+           << pct(r.reflectionTexels.n ? double(r.reflectionNotShown) / double(r.reflectionTexels.n)
+                                       : std::numeric_limits<double>::quiet_NaN())
+           << " | " << fmt(r.fresnelError.median, 4) << " | " << pct(r.causticsErrors.relativeRmse) << " | "
+           << pct(r.waterPixels ? double(r.coverageMismatch) / double(r.waterPixels) : std::numeric_limits<double>::quiet_NaN())
+           << " | " << r.nanPixels << " |\n";
     }
     md << "\nEvery technique × view is in `results.csv` / `results.json` beside the run's output.\n";
     if (!md) error = "cannot write " + dir + "/BENCHMARKS.md";

@@ -15,7 +15,8 @@ struct Record {
     double t = 0.0;
     double frameMs = 0.0, plainMs = 0.0, ratio = 0.0;
     size_t waterPixels = 0, misses = 0, tirMismatch = 0, coverageMismatch = 0, nanPixels = 0;
-    Quantiles refractionPx, refractionM, reflectionTexels, fresnelError;
+    size_t reflectionNotShown = 0; //!< measured pixels whose mirror hit the reflection pass cannot show
+    Quantiles refractionPx, refractionM, reflectionTexels, reflectionShownTexels, fresnelError;
     CausticsErrors causticsErrors;
 };
 
@@ -25,6 +26,9 @@ struct Summary {
     double ratioInView = 0.0;   //!< median over views with water in view and the eye above it
     double frameMs = 0.0;       //!< median over the same views
     Quantiles refractionPx, refractionM, reflectionTexels, fresnel; //!< every pixel of every view
+    Quantiles reflectionShownTexels;   //!< the pixels whose mirror hit the reflection pass shows
+    double reflectionNotShownShare = std::numeric_limits<double>::quiet_NaN(); //!< of the reflection's measured pixels
+    double coverageMismatchShare = std::numeric_limits<double>::quiet_NaN();   //!< of the reference's water pixels
     double causticsRmse = std::numeric_limits<double>::quiet_NaN(), causticsNoise = causticsRmse;
     size_t nanPixels = 0;
 };

@@ -77,7 +77,8 @@ Summary summarize(const std::string& name, const std::vector<Record>& records, s
     Summary s;
     s.technique = name;
     std::vector<double> ratios, frames, caustics, noise;
-    std::vector<float> px, m, refl, fres;
+    std::vector<float> px, m, refl, reflShown, fres;
+    size_t notShown = 0, coverageMismatch = 0, waterPixels = 0;
     for (size_t i = 0; i < records.size(); ++i) {
         const Record& r = records[i];
         if (r.technique != name) continue;
@@ -93,6 +94,10 @@ Summary summarize(const std::string& name, const std::vector<Record>& records, s
         px.insert(px.end(), errors[i].refractionPx.begin(), errors[i].refractionPx.end());
         m.insert(m.end(), errors[i].refractionM.begin(), errors[i].refractionM.end());
         refl.insert(refl.end(), errors[i].reflectionTexels.begin(), errors[i].reflectionTexels.end());
+        reflShown.insert(reflShown.end(), errors[i].reflectionShownTexels.begin(), errors[i].reflectionShownTexels.end());
+        notShown += errors[i].reflectionNotShown;
+        coverageMismatch += r.coverageMismatch;
+        waterPixels += r.waterPixels;
         fres.insert(fres.end(), errors[i].fresnel.begin(), errors[i].fresnel.end());
         errors[i] = ViewErrors(); // pooled: free the per-pixel values
     }
@@ -105,6 +110,9 @@ Summary summarize(const std::string& name, const std::vector<Record>& records, s
     s.refractionPx = quantiles(px);
     s.refractionM = quantiles(m);
     s.reflectionTexels = quantiles(refl);
+    s.reflectionShownTexels = quantiles(reflShown);
+    if (!refl.empty()) s.reflectionNotShownShare = double(notShown) / double(refl.size());
+    if (waterPixels) s.coverageMismatchShare = double(coverageMismatch) / double(waterPixels);
     s.fresnel = quantiles(fres);
     return s;
 }
@@ -297,10 +305,13 @@ int main(int argc, char** argv)
             r.coverageMismatch = ve.coverageMismatch;
             r.nanPixels = ve.nanPixels;
             {
-                std::vector<float> a = ve.refractionPx, b = ve.refractionM, c = ve.reflectionTexels, d = ve.fresnel;
+                std::vector<float> a = ve.refractionPx, b = ve.refractionM, c = ve.reflectionTexels, d = ve.fresnel,
+                                   c2 = ve.reflectionShownTexels;
                 r.refractionPx = quantiles(a);
                 r.refractionM = quantiles(b);
                 r.reflectionTexels = quantiles(c);
+                r.reflectionShownTexels = quantiles(c2);
+                r.reflectionNotShown = ve.reflectionNotShown;
                 r.fresnelError = quantiles(d);
             }
             if (osg::ref_ptr<osg::Image> caustics = probe.readCaustics(*water)) {
