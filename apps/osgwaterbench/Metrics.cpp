@@ -104,7 +104,7 @@ ViewErrors measureView(const ReferenceImage& ref, const Estimate& e, const RayCa
                     const bool onTexture = exact.x() >= 0.0 && exact.y() >= 0.0 && exact.x() <= e.reflectionSize &&
                                            exact.y() <= e.reflectionSize;
                     if ((r.flags & PixelRef::REFLECTION_SHOWN) && onTexture) v.reflectionShownTexels.push_back(texels);
-                    else ++v.reflectionNotShown;
+                    else ++v.reflectionNotShown; // hidden, under the level, or off the texture
                 }
             }
             if (!e.bottom.valid()) continue;

@@ -323,8 +323,8 @@ bool writeDocs(const std::string& dir, const RunInfo& info, const std::vector<Re
        << "pixels (the offset on screen that, to first order, moves the exact hit onto the shown point). "
        << "Reflection error: the lookup point against the mirror ray's exact hit, in reflection-texture "
        << "texels; \"shown\": only the pixels whose hit the reflection pass has in view (seen from the "
-       << "mirrored eye, on the eye's side of the level: not behind a shore, not a ray the waves send back "
-       << "under the level), which no lookup in that texture can find otherwise; \"not shown\": the share "
+       << "mirrored eye, on the eye's side of the level, and on the texture: not behind a shore, not a ray the "
+       << "waves send back under the level), which no lookup in that texture can find otherwise; \"not shown\": the share "
        << "of the others. Coverage: water pixels of the reference the render's water does not cover. "
        << "Caustics: relative RMSE of the caustics texture against photon tracing (blocks of "
        << "texels about 1.2 m on a side, whatever the texture's window and resolution; the reference's own "
@@ -347,7 +347,7 @@ bool writeDocs(const std::string& dir, const RunInfo& info, const std::vector<Re
        << "| view | eye | water px | frame ms | plain ms | ratio | refr. px median | p99 | max | refr. m median "
           "| refl. texels median | p99 | shown p99 | not shown | Fresnel err. median | caustics RMSE | coverage "
           "| NaN px |\n"
-       << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+       << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
     for (const Record& r : records) {
         if (r.technique != "default") continue;
         md << "| " << r.view << " | " << (r.eyeBelow ? "under water" : "above") << " | " << r.waterPixels << " | "
