@@ -89,7 +89,8 @@ bool owLineIntersection(vec3 U, vec3 R, vec3 A1, vec3 Q, out vec3 W)
 // bottom search), the reflection pass (the mirror search) and the sun's camera (photons).
 struct owDepthPass {
     mat4 proj, invProj;
-    vec4 floorPlane; // eye space: a surface with dot(floorPlane, A) < 0 does not count (seen as sky)
+    vec4 floorPlane;     // eye space: a surface with dot(floorPlane, A) < 0 does not count (seen as sky)
+    bool offTextureSky;  // a point off the texture sees sky (else the texture's edge answers for it)
 };
 
 // texture coordinate of an eye-space point of a pass; false behind the camera
@@ -102,15 +103,17 @@ bool owPassTexCoord(mat4 proj, vec3 P, out vec2 tc)
     return true;
 }
 
-// A: the first surface on the pass camera's ray through P; false for sky (the cleared depth) or a
-// surface under the pass's floor plane. Camera rays meet at the eye (A = P Z / P.z), or are
-// parallel to -Z when the includer defines OSGWATER_ORTHO_DEPTH (the sun's orthographic camera of
-// the caustics pass: A = (P.xy, Z)).
+// A: the first surface on the pass camera's ray through P; false for sky (the cleared depth), a
+// surface under the pass's floor plane, or a point off the texture where the pass says so. Camera
+// rays meet at the eye (A = P Z / P.z), or are parallel to -Z when the includer defines
+// OSGWATER_ORTHO_DEPTH (the sun's orthographic camera of the caustics pass: A = (P.xy, Z)).
 bool owSurfaceAlongRay(sampler2D depthTex, owDepthPass pass, vec3 P, out vec3 A)
 {
     A = P;
     vec2 tc;
     if (!(P.z < -1e-6) || !owPassTexCoord(pass.proj, P, tc)) return false;
+    if (pass.offTextureSky && !(all(greaterThanEqual(tc, vec2(0.0))) && all(lessThanEqual(tc, vec2(1.0)))))
+        return false;
     float d = texture(depthTex, tc).r;
     // only the cleared depth is sky: a sky dome drawn just inside the far plane is a surface
     if (d >= 1.0) return false;
@@ -132,16 +135,6 @@ struct owBottomHit { bool valid; vec3 W; vec3 A; float error; };
 #define OSGWATER_SEARCH_STEPS 8
 #endif
 
-// The surface behind P as owSurfaceAlongRay sees it, and none off the texture (where the texture's
-// edge would answer for what the pass did not draw).
-bool owSurfaceInView(sampler2D depthTex, owDepthPass pass, vec3 P, out vec3 A)
-{
-    vec2 tc;
-    A = P;
-    return owPassTexCoord(pass.proj, P, tc) && all(greaterThanEqual(tc, vec2(0.0))) && all(lessThanEqual(tc, vec2(1.0)))
-        && owSurfaceAlongRay(depthTex, pass, P, A);
-}
-
 // The reflected ray U + t R (t > 0) in the reflection pass's eye space, where the mirrored scene
 // lies: its hit. Invalid: the ray meets nothing the pass drew (the sky, or open water under water):
 // the caller looks it up by its direction. Mirrored in osgWater::optics::mirrorSearch.
@@ -161,8 +154,8 @@ owBottomHit owMirrorSearch(sampler2D depthTex, owDepthPass pass, vec3 U, vec3 R,
     owBottomHit none = owBottomHit(false, U, U, 0.0);
     vec3 A;
     float f0 = 1e30;
-    if (owSurfaceInView(depthTex, pass, U, A)) f0 = max(U.z - A.z, 0.0);
-    else if (!owSurfaceInView(depthTex, pass, R, A)) return none;
+    if (owSurfaceAlongRay(depthTex, pass, U, A)) f0 = max(U.z - A.z, 0.0);
+    else if (!owSurfaceAlongRay(depthTex, pass, R, A)) return none;
     owBottomHit best = owBottomHit(true, A, A, 1e30);
     float tLo = 0.0, fLo = f0, tHi = -1.0, fHi = 0.0; // tHi < 0: no point behind a surface yet
     int side = 0; // the end the last candidate replaced: -1 the front one, 1 the back one
@@ -171,7 +164,7 @@ owBottomHit owMirrorSearch(sampler2D depthTex, owDepthPass pass, vec3 U, vec3 R,
         if (i > steps) break;
         vec3 W = U + t * R;
         float f = 1e30;
-        if (owSurfaceInView(depthTex, pass, W, A)) {
+        if (owSurfaceAlongRay(depthTex, pass, W, A)) {
             f = W.z - A.z;
             float e = length(A - W);
             if (e < best.error) { best.W = W; best.A = A; best.error = e; }
@@ -201,7 +194,7 @@ uniform mat4 osgWater_RefractionInvProj;
 
 owDepthPass owRefractionPass()
 {
-    return owDepthPass(osgWater_RefractionProj, osgWater_RefractionInvProj, vec4(0.0, 0.0, 0.0, 1.0));
+    return owDepthPass(osgWater_RefractionProj, osgWater_RefractionInvProj, vec4(0.0, 0.0, 0.0, 1.0), false);
 }
 
 bool owRefractionTexCoord(vec3 P, out vec2 tc)
