@@ -314,7 +314,7 @@ void WaterNode::cullAsGuest(osgUtil::CullVisitor& cv)
         osg::Group::traverse(cv);
     }
     ScopedStateSets states(cv, { _states.getSceneStateSet(), _states.getWaterStateSet(), _states.getGuestStateSet() });
-    _surface->accept(cv);
+    _surface->getUniformMesh()->accept(cv); // the rings follow an eye: not the host pass's
 }
 
 WaterNode::ViewFrame WaterNode::gatherFacts(osgUtil::CullVisitor& cv)
@@ -574,7 +574,7 @@ void WaterNode::prepareCaustics(ViewFrame& v)
             !_warnedTile.exchange(true))
             OSG_WARN << "osgWater: WaterNode \"" << getName() << "\": the waves do not repeat over the caustics tile of "
                      << f.tile << " m: the tiled caustics show seams" << std::endl;
-        f.surface = _surface.get();
+        f.surface = _surface->getUniformMesh(); // seen from the sun: the uniform grid
         f.settings = &s;
         _causticsNeeded = CausticsCamera::needed(f);
         _reflectedNeeded = false;

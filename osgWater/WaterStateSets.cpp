@@ -74,6 +74,7 @@ WaterStateSets::WaterStateSets()
     _water->addUniform(new osg::Uniform("osgWater_OneStep", osg::Vec2f(1.0f, 20.0f)));
     _water->addUniform(new osg::Uniform("osgWater_LookupPlanes", osg::Vec2f(1.0f, 1.0f)));
     _water->addUniform(new osg::Uniform("osgWater_WaterColor", osg::Vec3f()));
+    _water->addUniform(new osg::Uniform("osgWater_SurfaceSquare", osg::Vec4f()));
     _water->addUniform(new osg::Uniform("osgWater_Extinction", osg::Vec3f()));
 
     _guest = new osg::StateSet;
@@ -117,7 +118,11 @@ void WaterStateSets::applySettings(const WaterSettings& s, const WaterSurface& s
     }
     w->getUniform("osgWater_WaveCount")->set(int(waves.size()));
 
+    const osg::Vec2f half(0.5f * surface.getSize(), 0.5f * surface.getSize());
+    const osg::Vec2f lo = surface.getCenter() - half, hi = surface.getCenter() + half;
+    w->getUniform("osgWater_SurfaceSquare")->set(osg::Vec4f(lo.x(), lo.y(), hi.x(), hi.y()));
     setDefineIf(w, "OSGWATER_GRID", surface.usesGrid());
+    setDefineIf(w, "OSGWATER_RINGS", surface.usesGrid() && surface.getMeshLayout() == WaterSurface::MESH_EYE_RINGS);
     setDefineIf(w, "OSGWATER_ONE_STEP", s.getRefractionLookup() == WaterSettings::ONE_STEP);
     setDefineIf(w, "OSGWATER_REFRACTION_PLANE", s.getRefractionLookup() == WaterSettings::PLANE_OFFSET);
     w->setDefine("OSGWATER_REFLECTION", std::to_string(int(s.getReflectionLookup()))); // the enum's numbers
@@ -126,8 +131,7 @@ void WaterStateSets::applySettings(const WaterSettings& s, const WaterSurface& s
     // OSGWATER_NO_REFLECTION / OSGWATER_NO_REFRACTION follow what ran (ViewPasses), not the
     // settings; OSGWATER_ENVIRONMENT the map in use (setEnvironmentMap())
     if (debug == DEBUG_NONE) w->removeDefine("OSGWATER_DEBUG");
-    else w->setDefine("OSGWATER_DEBUG", debug == DEBUG_BOTTOM_HIT ? "1" : debug == DEBUG_REFLECTION_LOOKUP ? "2"
-                                        : debug == DEBUG_FRESNEL ? "3" : "4");
+    else w->setDefine("OSGWATER_DEBUG", std::to_string(int(debug))); // the enum's numbers
 }
 
 void WaterStateSets::applyTime(const WaterSurface& surface, double t)

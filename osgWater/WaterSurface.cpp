@@ -90,14 +90,15 @@ std::vector<Wave> osgWater::defaultWaves()
 }
 
 WaterSurface::WaterSurface()
-    : _level(0.0), _size(100.0f), _center(0.0f, 0.0f), _resolution(49), _waves(defaultWaves()), _revision(0),
-      _stale(true), _waveSlope(slopeBound(_waves))
+    : _level(0.0), _size(100.0f), _center(0.0f, 0.0f), _resolution(49), _layout(MESH_EYE_RINGS), _waves(defaultWaves()),
+      _uniformMesh(new osg::Geode), _revision(0), _stale(true), _waveSlope(slopeBound(_waves))
 {
 }
 
 WaterSurface::WaterSurface(const WaterSurface& o, const osg::CopyOp& copyop)
     : osg::Geode(o, copyop), _level(o._level), _size(o._size), _center(o._center), _resolution(o._resolution),
-      _waves(o._waves), _userMesh(o._userMesh), _revision(0), _stale(true), _waveSlope(o._waveSlope)
+      _layout(o._layout), _waves(o._waves), _userMesh(o._userMesh), _uniformMesh(new osg::Geode), _revision(0), _stale(true),
+      _waveSlope(o._waveSlope)
 {
 }
 
@@ -139,6 +140,57 @@ void WaterSurface::setResolution(unsigned int n)
     rebuild();
 }
 
+void WaterSurface::setMeshLayout(MeshLayout layout)
+{
+    if (layout != MESH_GRID && layout != MESH_EYE_RINGS) {
+        OSG_WARN << "osgWater::WaterSurface: meshLayout " << int(layout) << " names no layout, using MESH_EYE_RINGS"
+                 << std::endl;
+        layout = MESH_EYE_RINGS;
+    }
+    _layout = layout;
+    rebuild();
+}
+
+const char* WaterSurface::meshLayoutName(MeshLayout layout)
+{
+    return layout == MESH_GRID ? "grid" : layout == MESH_EYE_RINGS ? "rings" : nullptr;
+}
+
+bool WaterSurface::meshLayoutFromName(const std::string& name, MeshLayout& layout)
+{
+    for (MeshLayout l : { MESH_GRID, MESH_EYE_RINGS })
+        if (name == meshLayoutName(l)) {
+            layout = l;
+            return true;
+        }
+    return false;
+}
+
+double WaterSurface::ringRadius(unsigned int i, double eyeHeight, double reach)
+{
+    const double h = std::max(std::fabs(eyeHeight), RING_INNER_HEIGHT);
+    const double c = std::asinh(std::max(reach, 0.0) / h) / RING_COUNT;
+    return h * std::sinh(c * std::min(i, RING_COUNT));
+}
+
+double WaterSurface::ringCellSize(unsigned int i, double eyeHeight, double reach)
+{
+    // dr/di = H c cosh(c i) = c sqrt(r^2 + H^2): radially each ring spans the angle c from an eye
+    // at height H; around, a cell spans 2 pi r / RING_SEGMENTS
+    const double h = std::max(std::fabs(eyeHeight), RING_INNER_HEIGHT);
+    const double c = std::asinh(std::max(reach, 0.0) / h) / RING_COUNT;
+    const double r = ringRadius(i, eyeHeight, reach);
+    return std::max(c * std::sqrt(r * r + h * h), kTwoPi * r / RING_SEGMENTS);
+}
+
+double WaterSurface::ringWaveFade(double wavelength, double cellSize)
+{
+    if (!(cellSize > 0.0)) return 1.0;
+    const double x = std::min(std::max((wavelength / cellSize - RING_FADE_MIN_CELLS) /
+                                           (RING_FADE_FULL_CELLS - RING_FADE_MIN_CELLS), 0.0), 1.0);
+    return x * x * (3.0 - 2.0 * x); // GLSL's smoothstep
+}
+
 void WaterSurface::setWaves(const std::vector<Wave>& waves)
 {
     if (waves.size() > MAX_WAVES)
@@ -165,7 +217,7 @@ void WaterSurface::setWaves(const std::vector<Wave>& waves)
         }
     }
     _waveSlope = slopeBound(_waves); // asked per view and frame (the glow's cone): worked out here, once
-    rebuild();
+    rewaved();
 }
 
 void WaterSurface::setMesh(osg::Geometry* mesh)
@@ -273,7 +325,9 @@ bool WaterSurface::intersect(const osg::Vec3d& start, const osg::Vec3d& end, dou
         const osg::BoundingBox& b = _userMesh->getBoundingBox();
         x0 = b.xMin(), y0 = b.yMin(), x1 = b.xMax(), y1 = b.yMax();
     }
-    const double a = usesGrid() ? getMaxAmplitude() : 0.0;
+    // padded a little, so that flat water is a slab the segment crosses, not a plane it may
+    // only touch in rounding
+    const double a = (usesGrid() ? getMaxAmplitude() : 0.0) + 1.0e-9 * (1.0 + std::fabs(_level));
     const double boxLo[3] = { x0, y0, _level - a }, boxHi[3] = { x1, y1, _level + a };
     const osg::Vec3d d = end - start;
     double s0 = 0.0, s1 = 1.0; // the segment's part inside that box (slab clipping)
@@ -295,16 +349,23 @@ bool WaterSurface::intersect(const osg::Vec3d& start, const osg::Vec3d& end, dou
     };
     double shortest = 1e30;
     for (const Wave& w : _waves) shortest = std::min(shortest, double(w.wavelength));
-    const double horizontal = osg::Vec2d(d.x(), d.y()).length() * (s1 - s0);
-    const int steps = usesGrid() && !_waves.empty()
-                          ? int(std::min(1.0e5, std::max(2.0, std::ceil(horizontal / (shortest / 16.0)))))
-                          : 1;
+    const double dxy = osg::Vec2d(d.x(), d.y()).length();
+    // steps of at least a sixteenth of the shortest wave, longer where the segment is far from the
+    // surface: its height above it changes by at most |dz| + slope |dxy| per unit of s, so a step
+    // of (height / that) cannot pass a crossing
+    const bool waves = usesGrid() && !_waves.empty();
+    const double rate = std::fabs(d.z()) + (waves ? getMaxSlope() : 0.0) * dxy;
+    // (never more than 1e5 of the shortest steps over the whole segment, as a huge water may ask)
+    const double minStep = waves && dxy > 0.0 ? std::max((shortest / 16.0) / dxy, (s1 - s0) * 1.0e-5) : (s1 - s0);
     // the first sign change between samples, then bisection (lo keeps the start's side)
     double sa = s0, fa = above(s0);
     bool found = fa == 0.0;
     ratio = s0;
-    for (int i = 1; i <= steps && !found; ++i) {
-        const double sb = s0 + (s1 - s0) * double(i) / steps, fb = above(sb);
+    while (!found && sa < s1) {
+        const double step = rate > 0.0 ? std::max(minStep, 0.999 * std::fabs(fa) / rate) : minStep;
+        const double sb = std::min(s1, sa + step);
+        if (!(sb > sa)) break; // a step below the precision of s: nothing left to sample
+        const double fb = above(sb);
         if ((fb > 0.0) != (fa > 0.0) || fb == 0.0) {
             double lo = sa, hi = sb;
             for (int k = 0; k < 80; ++k) {
@@ -322,6 +383,33 @@ bool WaterSurface::intersect(const osg::Vec3d& start, const osg::Vec3d& end, dou
     point = start + d * ratio;
     normal = usesGrid() ? this->normal(point.x(), point.y(), t) : osg::Vec3d(0.0, 0.0, 1.0);
     return true;
+}
+
+void WaterSurface::rewaved()
+{
+    // the built-in mesh does not depend on the waves (the shaders displace it): only its bound does.
+    // Rebuilding it would cost a new vertex buffer every time an animation sets them
+    ++_revision;
+    if (_stale || !usesGrid() || !getNumDrawables()) {
+        rebuild();
+        return;
+    }
+    std::lock_guard<std::mutex> lock(_building);
+    for (osg::Geode* geode : { static_cast<osg::Geode*>(this), _uniformMesh.get() })
+        for (unsigned int i = 0; i < geode->getNumDrawables(); ++i)
+            if (osg::Geometry* g = geode->getDrawable(i)->asGeometry()) {
+                g->setInitialBound(builtInBound());
+                g->dirtyBound();
+            }
+    _uniformMesh->dirtyBound();
+    dirtyBound();
+}
+
+osg::BoundingBox WaterSurface::builtInBound() const
+{
+    const float a = getMaxAmplitude();
+    const float x0 = _center.x() - 0.5f * _size, y0 = _center.y() - 0.5f * _size;
+    return osg::BoundingBox(x0, y0, float(_level) - a, x0 + _size, y0 + _size, float(_level) + a);
 }
 
 void WaterSurface::rebuild()
@@ -355,13 +443,56 @@ osg::BoundingSphere WaterSurface::computeBound() const
     return osg::Geode::computeBound();
 }
 
+void WaterSurface::resizeGLObjectBuffers(unsigned int maxSize)
+{
+    osg::Geode::resizeGLObjectBuffers(maxSize);
+    _uniformMesh->resizeGLObjectBuffers(maxSize);
+}
+
+void WaterSurface::releaseGLObjects(osg::State* state) const
+{
+    osg::Geode::releaseGLObjects(state);
+    _uniformMesh->releaseGLObjects(state);
+}
+
+osg::Node* WaterSurface::getUniformMesh()
+{
+    getGeometry(); // built together
+    return _uniformMesh.get();
+}
+
 void WaterSurface::build()
 {
     removeDrawables(0, getNumDrawables());
+    _uniformMesh->removeDrawables(0, _uniformMesh->getNumDrawables());
     if (_userMesh.valid()) {
         addDrawable(_userMesh.get());
+        _uniformMesh->addDrawable(_userMesh.get());
         return;
     }
+    osg::ref_ptr<osg::Geometry> g = _layout == MESH_GRID ? buildGrid() : buildRings();
+    finishBuiltIn(*g);
+    addDrawable(g.get());
+    if (_layout != MESH_GRID) {
+        g = buildGrid();
+        finishBuiltIn(*g);
+    }
+    _uniformMesh->addDrawable(g.get());
+}
+
+void WaterSurface::finishBuiltIn(osg::Geometry& g) const
+{
+    g.setUseVertexBufferObjects(true);
+    osg::ref_ptr<osg::Vec3Array> nrm = new osg::Vec3Array(1);
+    (*nrm)[0].set(0.0f, 0.0f, 1.0f);
+    g.setNormalArray(nrm.get(), osg::Array::BIND_OVERALL);
+    // the vertex shader moves vertices by up to the amplitude (and the rings about the square):
+    // the bound is the square between the troughs and the crests, so culling stays right
+    g.setInitialBound(builtInBound());
+}
+
+osg::Geometry* WaterSurface::buildGrid() const
+{
     const unsigned int n = _resolution;
     osg::ref_ptr<osg::Vec3Array> v = new osg::Vec3Array;
     v->reserve(n * n);
@@ -378,16 +509,51 @@ void WaterSurface::build()
             tris->push_back(a); tris->push_back(b); tris->push_back(d);
             tris->push_back(a); tris->push_back(d); tris->push_back(c);
         }
-    osg::ref_ptr<osg::Vec3Array> nrm = new osg::Vec3Array(1);
-    (*nrm)[0].set(0.0f, 0.0f, 1.0f);
-    osg::ref_ptr<osg::Geometry> g = new osg::Geometry;
+    osg::Geometry* g = new osg::Geometry;
     g->setName("osgWater.grid");
-    g->setUseVertexBufferObjects(true);
     g->setVertexArray(v.get());
-    g->setNormalArray(nrm.get(), osg::Array::BIND_OVERALL);
     g->addPrimitiveSet(tris.get());
-    // the vertex shader moves vertices by up to the amplitude: grow the bound so culling stays right
-    const float a = getMaxAmplitude();
-    g->setInitialBound(osg::BoundingBox(x0, y0, float(_level) - a, x0 + _size, y0 + _size, float(_level) + a));
-    addDrawable(g.get());
+    return g;
+}
+
+namespace {
+// the drawn bound is the initial bound (the square between troughs and crests), whatever the
+// vertex array holds: the rings' CPU vertices reach past the square
+struct InitialBoundOnly : osg::Drawable::ComputeBoundingBoxCallback {
+    osg::BoundingBox computeBound(const osg::Drawable&) const override { return osg::BoundingBox(); }
+};
+}
+
+osg::Geometry* WaterSurface::buildRings() const
+{
+    // the vertex array holds the rings evenly spaced out to the square's corners, flat at the level
+    // (what a polytope intersector or the statistics read); water.vert reads ring i and direction
+    // phi back from each vertex (i = its distance from the centre over the spacing) and places it
+    // for this view's eye. One array: a second (texture coordinates) in the same vertex buffer
+    // crashed Mesa's llvmpipe when buffers were remade under it
+    const unsigned int m = RING_SEGMENTS, n = RING_COUNT;
+    osg::ref_ptr<osg::Vec3Array> v = new osg::Vec3Array;
+    v->reserve((n + 1) * m);
+    const double spacing = 0.5 * _size * std::sqrt(2.0) / n;
+    for (unsigned int i = 0; i <= n; ++i)
+        for (unsigned int j = 0; j < m; ++j) {
+            const double phi = kTwoPi * j / m, r = spacing * i;
+            v->push_back(osg::Vec3(float(_center.x() + r * std::cos(phi)), float(_center.y() + r * std::sin(phi)),
+                                   float(_level)));
+        }
+    osg::ref_ptr<osg::DrawElementsUInt> tris = new osg::DrawElementsUInt(GL_TRIANGLES);
+    tris->reserve(n * m * 6);
+    for (unsigned int i = 0; i < n; ++i)
+        for (unsigned int j = 0; j < m; ++j) {
+            // counter-clockwise seen from above, as the grid's (ring 0 is one point: a = b there)
+            const unsigned int a = i * m + j, b = i * m + (j + 1) % m, c = a + m, d = b + m;
+            tris->push_back(a); tris->push_back(d); tris->push_back(b);
+            tris->push_back(a); tris->push_back(c); tris->push_back(d);
+        }
+    osg::Geometry* g = new osg::Geometry;
+    g->setName("osgWater.rings");
+    g->setVertexArray(v.get());
+    g->addPrimitiveSet(tris.get());
+    g->setComputeBoundingBoxCallback(new InitialBoundOnly);
+    return g;
 }

@@ -51,6 +51,10 @@ REGISTER_OBJECT_WRAPPER(osgWater_WaterSurface, new osgWater::WaterSurface, osgWa
     ADD_PRECISE_FLOAT_SERIALIZER(Size, 100.0f);
     ADD_PRECISE_VEC2F_SERIALIZER(Center, osg::Vec2f(0.0f, 0.0f));
     ADD_UINT_SERIALIZER(Resolution, 49u);
+    BEGIN_ENUM_SERIALIZER(MeshLayout, MESH_EYE_RINGS);
+        ADD_ENUM_VALUE(MESH_GRID);
+        ADD_ENUM_VALUE(MESH_EYE_RINGS);
+    END_ENUM_SERIALIZER();
     ADD_USER_SERIALIZER(Waves);
     ADD_OBJECT_SERIALIZER(Mesh, osg::Geometry, NULL);
 }

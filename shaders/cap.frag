@@ -54,5 +54,5 @@ void main()
 #endif
     vec4 debugHit;
     vec3 color = owShadeWater(S, N, -D, debugHit);
-    gl_FragColor = owWaterFragment(S, color, debugHit);
+    gl_FragColor = owWaterFragment(S, S, color, debugHit);
 }

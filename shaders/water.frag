@@ -1,6 +1,7 @@
 #version 130
 #pragma import_defines(OSGWATER_GRID, OSGWATER_EYE_BELOW, OSGWATER_ONE_STEP, OSGWATER_REFRACTION_PLANE, OSGWATER_REFLECTION, OSGWATER_FRESNEL, OSGWATER_UNDERWATER, OSGWATER_NO_REFLECTION, OSGWATER_NO_REFRACTION, OSGWATER_SEARCH_STEPS, OSGWATER_ENVIRONMENT, OSGWATER_DEBUG)
-// The water surface (thesis ch. 7, §9.1): shaded by watershade.glsl at the fragment's point.
+// The water surface (thesis ch. 7, §9.1): shaded by watershade.glsl where the fragment's line of
+// sight meets the surface (the analytic waves over the built-in mesh, the mesh itself otherwise).
 // Everything is in the WaterNode's local frame (z up) unless it says eye space.
 #pragma include "waves.glsl"
 #pragma include "watershade.glsl"
@@ -10,14 +11,15 @@ in vec3 vMeshNormal;
 
 void main()
 {
-    vec3 U = vLocal;
-    vec3 E = owSafeNormalize(osgWater_EyeLocal - U, vec3(0.0, 0.0, 1.0));
 #ifdef OSGWATER_GRID
-    vec3 N = waterNormal(U.xy);
+    vec3 N;
+    vec3 U = waterOnSightRay(osgWater_EyeLocal, vLocal, N);
 #else
+    vec3 U = vLocal;
     vec3 N = owSafeNormalize(vMeshNormal, vec3(0.0, 0.0, 1.0));
 #endif
+    vec3 E = owSafeNormalize(osgWater_EyeLocal - U, vec3(0.0, 0.0, 1.0));
     vec4 debugHit;
     vec3 color = owShadeWater(U, N, E, debugHit);
-    gl_FragColor = owWaterFragment(U, color, debugHit);
+    gl_FragColor = owWaterFragment(U, vLocal, color, debugHit);
 }

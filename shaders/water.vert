@@ -1,15 +1,49 @@
 #version 130
-#pragma import_defines(OSGWATER_GRID)
-// The water surface, in the WaterNode's local frame (z up).
+#pragma import_defines(OSGWATER_GRID, OSGWATER_RINGS)
+// The water surface, in the WaterNode's local frame (z up). OSGWATER_GRID: the built-in mesh,
+// displaced by the waves; OSGWATER_RINGS: that mesh is WaterSurface::MESH_EYE_RINGS, placed here
+// around the point under this view's eye (mirrored by WaterSurface::ringRadius / ringCellSize).
 #pragma include "waves.glsl"
 
 out vec3 vLocal;
 out vec3 vMeshNormal;
 
+#ifdef OSGWATER_RINGS
+uniform vec3 osgWater_EyeLocal;
+uniform vec4 osgWater_SurfaceSquare; // (x0, y0, x1, y1): the built-in mesh's square
+const float kRingCount = 256.0;      // WaterSurface::RING_COUNT
+const float kRingSegments = 128.0;   // WaterSurface::RING_SEGMENTS
+const float kRingInnerHeight = 0.01; // WaterSurface::RING_INNER_HEIGHT
+
+// gl_Vertex: ring i of the rings evenly spaced out to the square's corners (WaterSurface::buildRings)
+vec4 ringVertex()
+{
+    vec2 centre = 0.5 * (osgWater_SurfaceSquare.xy + osgWater_SurfaceSquare.zw);
+    vec2 fromCentre = gl_Vertex.xy - centre;
+    float nominal = length(fromCentre);
+    float i = floor(nominal / (0.70710678 * (osgWater_SurfaceSquare.z - osgWater_SurfaceSquare.x)) * kRingCount + 0.5);
+    vec2 dir = nominal > 0.0 ? fromCentre / nominal : vec2(1.0, 0.0);
+
+    vec2 c = osgWater_EyeLocal.xy;
+    float h = max(abs(osgWater_EyeLocal.z - osgWater_Level), kRingInnerHeight);
+    vec2 far = max(abs(c - osgWater_SurfaceSquare.xy), abs(c - osgWater_SurfaceSquare.zw));
+    float growth = asinh(length(far) / h) / kRingCount;
+    float r = h * sinh(growth * i);
+    float cell = max(growth * sqrt(r * r + h * h), 6.2831853 * r / kRingSegments);
+    // pulled onto the square: a triangle of clamped vertices lies inside it, and the rings, which
+    // reach past it, still cover all of it (no discard off the square, which would keep a GPU from
+    // testing depth before shading)
+    vec2 p = clamp(c + r * dir, osgWater_SurfaceSquare.xy, osgWater_SurfaceSquare.zw);
+    return vec4(p, waterHeightDrawn(p, cell), 1.0);
+}
+#endif
+
 void main()
 {
     vec4 v = gl_Vertex;
-#ifdef OSGWATER_GRID
+#if defined(OSGWATER_RINGS)
+    v = ringVertex();
+#elif defined(OSGWATER_GRID)
     v.z = waterHeight(v.xy);
 #endif
     vLocal = v.xyz;

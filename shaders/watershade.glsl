@@ -241,9 +241,10 @@ vec3 owShadeWater(vec3 U, vec3 Nup, vec3 E, out vec4 debugOut)
     return refrCol + F * (reflCol - refrCol); // eq. 9
 }
 
-// What a fragment of the water writes at U: its colour, or the debug output (OSGWATER_DEBUG 4: the
-// analytic surface under U; else what owShadeWater reported), the same for the surface and the cap.
-vec4 owWaterFragment(vec3 U, vec3 color, vec4 debugHit)
+// What a fragment of the water writes at U (on the surface; `drawn`: the rasterised point it was
+// found from): its colour, or the debug output (OSGWATER_DEBUG 4: the analytic surface under U;
+// 5: the drawn point; else what owShadeWater reported), the same for the surface and the cap.
+vec4 owWaterFragment(vec3 U, vec3 drawn, vec3 color, vec4 debugHit)
 {
 #if defined(OSGWATER_DEBUG) && OSGWATER_DEBUG == 4
 #ifdef OSGWATER_GRID
@@ -251,6 +252,8 @@ vec4 owWaterFragment(vec3 U, vec3 color, vec4 debugHit)
 #else
     return vec4(U, 2.0);
 #endif
+#elif defined(OSGWATER_DEBUG) && OSGWATER_DEBUG == 5
+    return vec4(drawn, 2.0);
 #elif defined(OSGWATER_DEBUG)
     return debugHit;
 #else

@@ -208,6 +208,16 @@ TEST(BadValues, EnumsThatNameNoModelFallBackToTheDefaultWithOneWarning)
             EXPECT_EQ(countWarnings(capture.str()), valid ? 0u : 1u);
             if (!valid) EXPECT_NE(capture.str().find(e.name), std::string::npos);
         }
+    for (int v : { INT_MIN, -1, 0, 1, 2, 1000, INT_MAX }) {
+        osg::ref_ptr<WaterSurface> s = new WaterSurface;
+        ScopedWarnCapture capture;
+        s->setMeshLayout(WaterSurface::MeshLayout(v));
+        const bool valid = v == 0 || v == 1;
+        SCOPED_TRACE("meshLayout = " + std::to_string(v) + ", warnings: " + capture.str());
+        EXPECT_EQ(int(s->getMeshLayout()), valid ? v : int(WaterSurface::MESH_EYE_RINGS));
+        EXPECT_EQ(countWarnings(capture.str()), valid ? 0u : 1u);
+        if (!valid) EXPECT_NE(capture.str().find("meshLayout"), std::string::npos);
+    }
 }
 
 TEST(BadValues, AMeshWithBadVerticesOrIndicesIsRefusedWithOneWarning)

@@ -65,6 +65,7 @@ osg::ref_ptr<WaterNode> pond()
     f->setLevel(1.5);
     f->setSize(60.0f);
     f->setResolution(33);
+    f->setMeshLayout(WaterSurface::MESH_GRID);
     Wave wave;
     wave.direction.set(0.6f, 0.8f);
     wave.wavelength = 5.0f;
@@ -127,6 +128,7 @@ TEST(Serialization, ExpectedTextReadsBackIntoTheSameNode)
     EXPECT_DOUBLE_EQ(f->getLevel(), 1.5);
     EXPECT_FLOAT_EQ(f->getSize(), 60.0f);
     EXPECT_EQ(f->getResolution(), 33u);
+    EXPECT_EQ(f->getMeshLayout(), WaterSurface::MESH_GRID);
     ASSERT_EQ(f->getWaves().size(), 1u);
     EXPECT_NEAR(f->getWaves()[0].direction.x(), 0.6f, 1e-6f);
     EXPECT_FLOAT_EQ(f->getWaves()[0].wavelength, 5.0f);

@@ -5,9 +5,10 @@
 
 using namespace osgWater;
 
-TEST(Surface, DefaultGridIsTheThesisMesh)
+TEST(Surface, TheGridLayoutIsTheThesisMesh)
 {
     osg::ref_ptr<WaterSurface> s = new WaterSurface;
+    s->setMeshLayout(WaterSurface::MESH_GRID);
     osg::Geometry* g = s->getGeometry();
     ASSERT_TRUE(g);
     ASSERT_EQ(s->getNumDrawables(), 1u);
@@ -16,11 +17,90 @@ TEST(Surface, DefaultGridIsTheThesisMesh)
     EXPECT_TRUE(s->usesGrid());
 }
 
+// the default: rings around the eye. Their CPU vertices (what a polytope intersector or the
+// statistics read) lie flat at the level, rings evenly spaced out to the square's corners, from
+// which water.vert reads each vertex's ring and direction back; the bound is the square
+TEST(Surface, TheDefaultLayoutIsRingsAroundTheEye)
+{
+    osg::ref_ptr<WaterSurface> s = new WaterSurface;
+    s->setSize(40.0f);
+    s->setCenter(osg::Vec2(10.0f, -5.0f));
+    s->setLevel(2.0);
+    EXPECT_EQ(s->getMeshLayout(), WaterSurface::MESH_EYE_RINGS);
+    osg::Geometry* g = s->getGeometry();
+    ASSERT_TRUE(g);
+    const unsigned int m = WaterSurface::RING_SEGMENTS, n = WaterSurface::RING_COUNT;
+    const osg::Vec3Array* v = dynamic_cast<const osg::Vec3Array*>(g->getVertexArray());
+    ASSERT_TRUE(v);
+    ASSERT_EQ(v->size(), (n + 1) * m);
+    EXPECT_EQ(g->getNumTexCoordArrays(), 0u); // one array (see WaterSurface::buildRings)
+    EXPECT_EQ(g->getPrimitiveSet(0)->getNumIndices() / 3, 2u * n * m);
+    const double spacing = 20.0 * std::sqrt(2.0) / n;
+    for (unsigned int i = 0; i <= n; ++i)
+        for (unsigned int j = 0; j < m; ++j) {
+            const osg::Vec3& p = (*v)[i * m + j];
+            EXPECT_FLOAT_EQ(p.z(), 2.0f);
+            const osg::Vec2d d(p.x() - 10.0, p.y() + 5.0);
+            // the shader's reading: the ring to the nearest whole spacing (float: well within a half)
+            EXPECT_NEAR(d.length() / spacing, double(i), 1e-4) << i << " " << j;
+            if (i > 0) EXPECT_NEAR(std::atan2(d.y(), d.x()), std::remainder(2.0 * osg::PI * j / m, 2.0 * osg::PI), 1e-5);
+        }
+    // the bound is the square between troughs and crests, not the disc the vertex array reaches
+    const osg::BoundingBox& b = g->getBoundingBox();
+    EXPECT_NEAR(b.xMin(), -10.0f, 1e-4f);
+    EXPECT_NEAR(b.xMax(), 30.0f, 1e-4f);
+    EXPECT_NEAR(b.yMax(), 15.0f, 1e-4f);
+    EXPECT_NEAR(b.zMax(), 2.0f + s->getMaxAmplitude(), 1e-4f);
+}
+
+// each ring spans the same angle from the eye, at any height: the cell, over its distance from
+// the eye, is never more than the larger of the radial growth c and the angle between segments
+TEST(Surface, EveryRingCellSpansAboutTheSameAngleFromTheEye)
+{
+    for (double height : { 0.0, 1e-6, 0.5, 4.5, 48.0, 500.0 })
+        for (double reach : { 5.0, 99.0, 3000.0 }) {
+            const double h = std::max(height, WaterSurface::RING_INNER_HEIGHT);
+            const double c = std::asinh(reach / h) / WaterSurface::RING_COUNT;
+            const double around = 2.0 * osg::PI / WaterSurface::RING_SEGMENTS;
+            EXPECT_DOUBLE_EQ(WaterSurface::ringRadius(0, height, reach), 0.0);
+            EXPECT_NEAR(WaterSurface::ringRadius(WaterSurface::RING_COUNT, height, reach), reach, 1e-9 * reach);
+            double last = -1.0;
+            for (unsigned int i = 0; i <= WaterSurface::RING_COUNT; ++i) {
+                const double r = WaterSurface::ringRadius(i, height, reach);
+                EXPECT_GT(r, last);
+                last = r;
+                const double distance = std::sqrt(r * r + h * h);
+                const double angle = WaterSurface::ringCellSize(i, height, reach) / distance;
+                EXPECT_LE(angle, std::max(c, around) * (1.0 + 1e-9)) << height << " " << reach << " " << i;
+                EXPECT_GE(angle, c * (1.0 - 1e-9));
+                if (i + 1 <= WaterSurface::RING_COUNT) // the next ring is one radial cell out (to first order)
+                    EXPECT_NEAR(WaterSurface::ringRadius(i + 1, height, reach) - r, c * distance, 0.05 * c * distance + 1e-12);
+            }
+        }
+}
+
+TEST(Surface, RingsFadeWavesTheirCellsCannotResolve)
+{
+    EXPECT_DOUBLE_EQ(WaterSurface::ringWaveFade(4.0, 1.0), 1.0);
+    EXPECT_DOUBLE_EQ(WaterSurface::ringWaveFade(40.0, 1.0), 1.0);
+    EXPECT_DOUBLE_EQ(WaterSurface::ringWaveFade(2.0, 1.0), 0.0); // Nyquist: gone
+    EXPECT_DOUBLE_EQ(WaterSurface::ringWaveFade(1.0, 1.0), 0.0);
+    EXPECT_DOUBLE_EQ(WaterSurface::ringWaveFade(3.0, 1.0), 0.5);
+    EXPECT_DOUBLE_EQ(WaterSurface::ringWaveFade(6.0, 2.0), 0.5); // cells per wave is what counts
+    double last = 0.0;
+    for (double cells = 2.0; cells <= 4.0; cells += 0.1) {
+        EXPECT_GE(WaterSurface::ringWaveFade(cells, 1.0), last);
+        last = WaterSurface::ringWaveFade(cells, 1.0);
+    }
+    EXPECT_DOUBLE_EQ(WaterSurface::ringWaveFade(1.0, 0.0), 1.0); // a point: nothing to fade
+}
+
 // reading a file sets level, size, centre, resolution and waves one by one: the grid is built once,
 // when something needs it, and the bound and traversals always see the latest values
 TEST(Surface, GridIsBuiltWhenNeededFromTheLatestValues)
 {
     osg::ref_ptr<WaterSurface> s = new WaterSurface;
+    s->setMeshLayout(WaterSurface::MESH_GRID);
     s->setResolution(1025);
     s->setSize(10.0f);
     s->setLevel(5.0);
@@ -35,6 +115,19 @@ TEST(Surface, GridIsBuiltWhenNeededFromTheLatestValues)
     s->setLevel(-2.0); // a change after the build: the bound follows
     EXPECT_NEAR(s->getBound().center().z(), -2.0f, 1e-4f);
     EXPECT_NEAR(s->getGeometry()->getBoundingBox().center().z(), -2.0f, 1e-4f);
+}
+
+// an animation may set the waves every frame: the mesh stays (the shaders displace it), its bound follows
+TEST(Surface, NewWavesKeepTheMeshAndGrowItsBound)
+{
+    osg::ref_ptr<WaterSurface> s = new WaterSurface;
+    osg::Geometry* before = s->getGeometry();
+    std::vector<Wave> waves = defaultWaves();
+    waves[0].amplitude = 2.0f;
+    s->setWaves(waves);
+    EXPECT_EQ(s->getGeometry(), before);
+    EXPECT_NEAR(before->getBoundingBox().zMax(), s->getMaxAmplitude(), 1e-5f);
+    EXPECT_NEAR(s->getBound().radius(), osg::Vec3(50.0f, 50.0f, s->getMaxAmplitude()).length(), 1e-3f);
 }
 
 TEST(Surface, MaxAmplitudeBoundsTheHeight)

@@ -64,8 +64,9 @@ std::string checkSurface(const osgWater::WaterSurface& f)
     if (!std::isfinite(f.getLevel()) || !std::isfinite(f.getSize()) || !(f.getSize() > 0.0f) ||
         !std::isfinite(f.getCenter().x()) || !std::isfinite(f.getCenter().y()) || !std::isfinite(f.getMaxAmplitude()))
         return "the surface's level, size, centre or amplitude is not finite";
-    if (f.getResolution() < 2 || f.getWaves().size() > osgWater::WaterSurface::MAX_WAVES)
-        return "the surface's resolution or wave count is out of range";
+    if (f.getResolution() < 2 || f.getWaves().size() > osgWater::WaterSurface::MAX_WAVES ||
+        !osgWater::WaterSurface::meshLayoutName(f.getMeshLayout()))
+        return "the surface's resolution, mesh layout or wave count is out of range";
     for (const osgWater::Wave& w : f.getWaves())
         if (!std::isfinite(w.wavenumber()) || !std::isfinite(w.angularFrequency()) || !std::isfinite(w.amplitude) ||
             !std::isfinite(w.phase) || !std::isfinite(w.direction.x()) || !std::isfinite(w.direction.y()))
