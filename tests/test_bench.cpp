@@ -44,7 +44,8 @@ osg::ref_ptr<osgWater::WaterSurface> flatSurface()
 TEST(BenchReference, FlatWaterAgreesWithSnellInClosedFormTo10Micrometres)
 {
     osg::ref_ptr<osgWater::WaterSurface> surface = flatSurface();
-    const RayCaster scene(flatQuad(-kDepth, 300.0)), water(collectWater(*surface, 0.0));
+    const RayCaster scene(flatQuad(-kDepth, 300.0));
+    const WaterCaster water(*surface, 0.0);
     const Reference ref(scene, water, *surface, 0.0, Media{ 1.0, 1.333 });
     const glm::dvec3 eye(0.3, -4.0, 3.0);
     int checked = 0;
@@ -76,7 +77,8 @@ TEST(BenchReference, FlatWaterAgreesWithSnellInClosedFormTo10Micrometres)
 TEST(BenchReference, FromBelowTotalInternalReflectionBeyondTheCriticalAngle)
 {
     osg::ref_ptr<osgWater::WaterSurface> surface = flatSurface();
-    const RayCaster scene(flatQuad(-kDepth, 300.0)), water(collectWater(*surface, 0.0));
+    const RayCaster scene(flatQuad(-kDepth, 300.0));
+    const WaterCaster water(*surface, 0.0);
     const Reference ref(scene, water, *surface, 0.0, Media{ 1.0, 1.333 });
     const glm::dvec3 eye(0.0, 0.0, -1.0);
     const double critical = std::asin(1.0 / 1.333);
@@ -96,7 +98,8 @@ TEST(BenchPhotons, FlatWaterTransmitsOneMinusFresnelEverywhere)
     // flat water over a flat bed: refraction shifts the sun's footprint without spreading it, so
     // every texel of the bed receives the transmitted share (1 - F) of the sun's irradiance
     osg::ref_ptr<osgWater::WaterSurface> surface = flatSurface();
-    const RayCaster scene(flatQuad(-kDepth, 300.0)), water(collectWater(*surface, 0.0));
+    const RayCaster scene(flatQuad(-kDepth, 300.0));
+    const WaterCaster water(*surface, 0.0);
     osg::Vec3d sun(0.3, 0.4, 0.866);
     sun.normalize();
     const osg::BoundingBox box(-20, -20, -kDepth, 20, 20, 0.0);
@@ -143,7 +146,8 @@ struct FlatScene {
     ViewErrors measure(double referenceIor)
     {
         const Estimate e = probe.capture(*water, 0.0);
-        const RayCaster scene(collectScene(*water)), waterMesh(collectWater(*surface, 0.0));
+        const RayCaster scene(collectScene(*water));
+        const WaterCaster waterMesh(*surface, 0.0);
         const Reference ref(scene, waterMesh, *surface, 0.0, Media{ 1.0, referenceIor });
         const ReferenceImage img = traceView(ref, probe.camera()->getViewMatrix(), probe.camera()->getProjectionMatrix(),
                                              160, 120);

@@ -78,10 +78,13 @@ ViewErrors measureView(const ReferenceImage& ref, const Estimate& e, const RayCa
     for (int y = 0; y < ref.height; ++y)
         for (int x = 0; x < ref.width; ++x) {
             const PixelRef& r = ref.at(x, y);
-            if (!(r.flags & PixelRef::WATER)) continue;
             const osg::Vec4f b = e.bottom.valid() ? px(e.bottom.get(), x, y) : osg::Vec4f();
             // the render's water covers this pixel when a debug estimate (alpha < 0 or > 1.5) is there
             const bool covered = e.bottom.valid() && (b.w() < -0.5f || b.w() > 1.5f);
+            if (!(r.flags & PixelRef::WATER)) {
+                if (covered) ++v.coverageMismatch; // water drawn where the reference sees none
+                continue;
+            }
             if (e.bottom.valid() && !covered) { ++v.coverageMismatch; continue; }
             if (e.fresnel.valid()) {
                 const osg::Vec4f f = px(e.fresnel.get(), x, y);
@@ -121,6 +124,21 @@ ViewErrors measureView(const ReferenceImage& ref, const Estimate& e, const RayCa
             }
         }
     return v;
+}
+
+std::vector<float> drawnSurfaceError(const Estimate& e, const osgWater::WaterSurface& surface, double t)
+{
+    std::vector<float> out;
+    if (!e.drawn.valid() || !surface.usesGrid()) return out;
+    for (int y = 0; y < e.drawn->t(); ++y)
+        for (int x = 0; x < e.drawn->s(); ++x) {
+            const osg::Vec4f d = px(e.drawn.get(), x, y);
+            if (!(d.w() > 1.5f && d.w() < 2.5f) || !std::isfinite(d.x() + d.y() + d.z())) continue;
+            const osg::Vec3d drawn(d.x(), d.y(), d.z()), exact(d.x(), d.y(), surface.height(d.x(), d.y(), t));
+            const osg::Vec3d a = drawn * e.localToWindow, b = exact * e.localToWindow;
+            out.push_back(float(osg::Vec2d(a.x() - b.x(), a.y() - b.y()).length()));
+        }
+    return out;
 }
 
 CausticsErrors measureCaustics(const PhotonImage& ref, const osg::Image* img, int block)

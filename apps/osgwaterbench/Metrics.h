@@ -5,6 +5,7 @@
 #include "Reference.h"
 #include <osg/Image>
 #include <osg/Matrixd>
+#include <osgWater/WaterSurface>
 #include <limits>
 #include <vector>
 
@@ -21,6 +22,8 @@ Quantiles quantiles(std::vector<float>& v);
 //! What the renderer estimated for one view (read back after a frame of each debug output).
 struct Estimate {
     osg::ref_ptr<osg::Image> color, bottom, reflection, fresnel; //!< float RGBA, the view's size
+    osg::ref_ptr<osg::Image> drawn;    //!< the drawn mesh's point under each water pixel (DEBUG_DRAWN_SURFACE)
+    osg::Matrixd localToWindow;        //!< local frame -> window pixels (view, projection, viewport)
     osg::Matrixd refractionView;       //!< local -> refraction pass eye space
     osg::Vec3d refractionEye;          //!< the refraction camera's position, local frame
     bool eyeBelow = false;
@@ -39,7 +42,8 @@ struct ViewErrors {
     size_t waterPixels = 0;              //!< reference: pixels whose eye ray meets the water first
     size_t misses = 0;                   //!< reference refracted ray hits, the renderer found nothing
     size_t tirMismatch = 0;              //!< total internal reflection in one and not the other
-    size_t coverageMismatch = 0;         //!< water in the reference but not in the render (silhouettes)
+    size_t coverageMismatch = 0;         //!< water in one of the reference and the render, not in the other
+    std::vector<float> drawnSurfacePx;   //!< the drawn mesh's height error, screen pixels (drawnSurfaceError)
     size_t nanPixels = 0;                //!< pixels with a NaN or Inf in any read-back output
 };
 
@@ -48,6 +52,10 @@ struct ViewErrors {
 bool shownPoint(const osg::Vec4f& estimate, const Estimate& e, const RayCaster& scene, glm::dvec3& out);
 
 ViewErrors measureView(const ReferenceImage& ref, const Estimate& e, const RayCaster& scene);
+//! Per pixel of the render's water drawn by the built-in mesh: the rasterised point V against the
+//! analytic surface under it, (V.x, V.y, h(V.x, V.y)), both projected to the window: how far on
+//! screen the drawn surface lies from the exact one there. Empty over a user mesh.
+std::vector<float> drawnSurfaceError(const Estimate& e, const osgWater::WaterSurface& surface, double t);
 size_t countNonFinite(const osg::Image* img);
 
 struct CausticsErrors {

@@ -36,7 +36,7 @@ void progressBar(size_t done, size_t total, size_t perRow)
 
 }
 
-PhotonImage tracePhotons(const RayCaster& scene, const RayCaster& water, const osgWater::WaterSurface& surface,
+PhotonImage tracePhotons(const RayCaster& scene, const WaterCaster& water, const osgWater::WaterSurface& surface,
                          double t, const osg::Matrixd& localToSun, const osg::Vec3d& towardsSun,
                          const PhotonSettings& s)
 {

@@ -29,7 +29,7 @@ struct PhotonImage {
 
 //! localToSun: the water's local frame -> the sun camera's texture space [0,1]^3 (the matrix the
 //! scene shader uses); towardsSun: unit vector to the sun, local frame.
-PhotonImage tracePhotons(const RayCaster& scene, const RayCaster& water, const osgWater::WaterSurface& surface,
+PhotonImage tracePhotons(const RayCaster& scene, const WaterCaster& water, const osgWater::WaterSurface& surface,
                          double t, const osg::Matrixd& localToSun, const osg::Vec3d& towardsSun,
                          const PhotonSettings& settings);
 

@@ -93,12 +93,17 @@ Estimate Probe::capture(osgWater::WaterNode& water, double t)
     water.setDebugOutput(osgWater::DEBUG_FRESNEL);
     _viewer->frame(t);
     e.fresnel = read(_target.get());
+    water.setDebugOutput(osgWater::DEBUG_DRAWN_SURFACE);
+    _viewer->frame(t);
+    e.drawn = read(_target.get());
     water.setDebugOutput(before);
     if (saved.valid()) {
         camera()->attach(osg::Camera::COLOR_BUFFER, saved.get());
         camera()->dirtyAttachmentMap();
     }
 
+    e.localToWindow = camera()->getViewMatrix() * camera()->getProjectionMatrix() *
+                      camera()->getViewport()->computeWindowMatrix(); // the water is not transformed
     e.level = water.getSurface()->getLevel();
     e.clearance = water.getSurface()->getMaxAmplitude() + water.getSettings()->getClipOffset();
     if (osgWater::ViewPasses* p = water.getViewPasses(camera())) {

@@ -28,7 +28,7 @@ double fresnelExact(double cosI, double n1, double n2)
     return 0.5 * (rs * rs + rp * rp);
 }
 
-Reference::Reference(const RayCaster& scene, const RayCaster& water, const osgWater::WaterSurface& surface, double t,
+Reference::Reference(const RayCaster& scene, const WaterCaster& water, const osgWater::WaterSurface& surface, double t,
                      Media media)
     : _scene(scene), _water(water), _surface(surface), _t(t), _media(media)
 {

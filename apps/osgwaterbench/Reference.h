@@ -3,7 +3,7 @@
 // and the path length under water; from below with the indices swapped and total internal
 // reflection. Everything in the water's local frame, in double precision per ray.
 #pragma once
-#include "RayCaster.h"
+#include "WaterCaster.h"
 #include <osg/Matrixd>
 #include <glm/mat2x3.hpp>
 #include <cstdint>
@@ -39,7 +39,7 @@ struct PixelTrace {
 class Reference
 {
 public:
-    Reference(const RayCaster& scene, const RayCaster& water, const osgWater::WaterSurface& surface, double t,
+    Reference(const RayCaster& scene, const WaterCaster& water, const osgWater::WaterSurface& surface, double t,
               Media media);
     //! Whether an eye at this point is under the water (the wave height at its own x, y).
     bool eyeBelow(const glm::dvec3& eye) const;
@@ -55,7 +55,7 @@ private:
     //! the reflection texture can find it (hidden behind a shore, or a ray sent back under the level).
     bool mirrorShows(const glm::dvec3& eye, const PixelTrace& p) const;
     const RayCaster& _scene;
-    const RayCaster& _water;
+    const WaterCaster& _water;
     const osgWater::WaterSurface& _surface;
     double _t;
     Media _media;

@@ -17,6 +17,7 @@ struct Record {
     size_t waterPixels = 0, misses = 0, tirMismatch = 0, coverageMismatch = 0, nanPixels = 0;
     size_t reflectionNotShown = 0; //!< measured pixels whose mirror hit the reflection pass cannot show
     Quantiles refractionPx, refractionM, reflectionTexels, reflectionShownTexels, fresnelError;
+    Quantiles drawnSurfacePx; //!< the drawn mesh against the analytic surface, screen pixels
     CausticsErrors causticsErrors;
 };
 
@@ -27,6 +28,9 @@ struct Summary {
     double frameMs = 0.0;       //!< median over the same views
     Quantiles refractionPx, refractionM, reflectionTexels, fresnel; //!< every pixel of every view
     Quantiles reflectionShownTexels;   //!< the pixels whose mirror hit the reflection pass shows
+    Quantiles drawnSurfacePx;          //!< the drawn mesh against the analytic surface, every pixel of every view
+    double worstCoverageShare = std::numeric_limits<double>::quiet_NaN(); //!< the worst view's coverage mismatch
+    std::string worstCoverageView;
     double reflectionNotShownShare = std::numeric_limits<double>::quiet_NaN(); //!< of the reflection's measured pixels
     double coverageMismatchShare = std::numeric_limits<double>::quiet_NaN();   //!< of the reference's water pixels
     double causticsRmse = std::numeric_limits<double>::quiet_NaN(), causticsNoise = causticsRmse;

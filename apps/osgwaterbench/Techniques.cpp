@@ -19,6 +19,7 @@ std::vector<Technique> allTechniques()
     t.push_back({ "refraction-plane", [](WaterSettings& s) { s.setRefractionLookup(WaterSettings::PLANE_OFFSET); } });
     t.push_back({ "reflection-offset", [](WaterSettings& s) { s.setReflectionLookup(WaterSettings::REFLECTION_OFFSET); } });
     t.push_back({ "reflection-plane", [](WaterSettings& s) { s.setReflectionLookup(WaterSettings::REFLECTION_PLANE); } });
+    t.push_back({ "mesh-grid", [](WaterSettings&) {}, osgWater::WaterSurface::MESH_GRID });
     t.push_back({ "environment-map", [](WaterSettings& s) { s.setEnvironmentMapEnabled(true); } });
     t.push_back({ "no-rotation", [](WaterSettings& s) { s.setRefractionCameraRotation(false); } });
     for (int size : { 256, 1024 })

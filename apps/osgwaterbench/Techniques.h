@@ -1,9 +1,11 @@
 // The techniques and settings the benchmark compares: the scene's own settings ("default"), and
 // one axis changed at a time (refraction lookup and its steps, camera rotation, texture size,
-// Fresnel model, caustics path, glow, underwater model).
+// Fresnel model, caustics path, glow, underwater model, the surface's mesh).
 #pragma once
 #include <osgWater/WaterSettings>
+#include <osgWater/WaterSurface>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -12,6 +14,8 @@ namespace bench {
 struct Technique {
     std::string name;
     std::function<void(osgWater::WaterSettings&)> apply; //!< applied to a copy of the scene's settings
+    //! The surface's mesh layout for this technique; none: the scene's (put back after each)
+    std::optional<osgWater::WaterSurface::MeshLayout> mesh;
 };
 
 //! Every technique, "default" first.

@@ -77,7 +77,7 @@ Summary summarize(const std::string& name, const std::vector<Record>& records, s
     Summary s;
     s.technique = name;
     std::vector<double> ratios, frames, caustics, noise;
-    std::vector<float> px, m, refl, reflShown, fres;
+    std::vector<float> px, m, refl, reflShown, fres, drawn;
     size_t notShown = 0, coverageMismatch = 0, waterPixels = 0;
     for (size_t i = 0; i < records.size(); ++i) {
         const Record& r = records[i];
@@ -98,6 +98,14 @@ Summary summarize(const std::string& name, const std::vector<Record>& records, s
         notShown += errors[i].reflectionNotShown;
         coverageMismatch += r.coverageMismatch;
         waterPixels += r.waterPixels;
+        if (r.waterPixels) {
+            const double share = double(r.coverageMismatch) / double(r.waterPixels);
+            if (!(share <= s.worstCoverageShare)) {
+                s.worstCoverageShare = share;
+                s.worstCoverageView = r.view;
+            }
+        }
+        drawn.insert(drawn.end(), errors[i].drawnSurfacePx.begin(), errors[i].drawnSurfacePx.end());
         fres.insert(fres.end(), errors[i].fresnel.begin(), errors[i].fresnel.end());
         errors[i] = ViewErrors(); // pooled: free the per-pixel values
     }
@@ -114,6 +122,7 @@ Summary summarize(const std::string& name, const std::vector<Record>& records, s
     if (!refl.empty()) s.reflectionNotShownShare = double(notShown) / double(refl.size());
     if (waterPixels) s.coverageMismatchShare = double(coverageMismatch) / double(waterPixels);
     s.fresnel = quantiles(fres);
+    s.drawnSurfacePx = quantiles(drawn);
     return s;
 }
 
@@ -242,13 +251,14 @@ int main(int argc, char** argv)
     const Media media{ base->getAirIOR(), base->getWaterIOR() };
     const RayCaster sceneCaster(collectScene(*water));
     std::cout << "reference: " << sceneCaster.size() << " scene triangles" << std::endl;
-    std::map<double, std::unique_ptr<RayCaster>> waterCasters;
+    std::map<double, std::unique_ptr<WaterCaster>> waterCasters;
     std::vector<ReferenceImage> references(views.size());
     std::map<std::pair<double, int>, PhotonImage> photonImages; // (time, caustics resolution) -> reference
     osgWater::WaterSurface* surface = water->getSurface();
+    const osgWater::WaterSurface::MeshLayout sceneMesh = surface->getMeshLayout();
     for (const View& v : views)
-        if (!waterCasters.count(v.t)) waterCasters[v.t] = std::make_unique<RayCaster>(collectWater(*surface, v.t));
-    std::cout << "reference: " << waterCasters.begin()->second->size() << " water triangles" << std::endl;
+        if (!waterCasters.count(v.t)) waterCasters[v.t] = std::make_unique<WaterCaster>(*surface, v.t);
+    std::cout << "reference: " << waterCasters.begin()->second->describe() << std::endl;
 
     std::vector<Record> records;
     std::vector<ViewErrors> errors;
@@ -257,6 +267,7 @@ int main(int argc, char** argv)
         osg::ref_ptr<osgWater::WaterSettings> s = new osgWater::WaterSettings(*base, osg::CopyOp::DEEP_COPY_ALL);
         tech.apply(*s);
         water->setSettings(s.get());
+        surface->setMeshLayout(tech.mesh ? *tech.mesh : sceneMesh);
         for (size_t vi = 0; vi < views.size(); ++vi) {
             const View& v = views[vi];
             Record r;
@@ -291,7 +302,7 @@ int main(int argc, char** argv)
             const osg::Timer_t phase = osg::Timer::instance()->tick();
             // error: the estimates against the reference
             const Estimate e = probe.capture(*water, v.t);
-            const RayCaster& waterCaster = *waterCasters[v.t];
+            const WaterCaster& waterCaster = *waterCasters[v.t];
             const Reference reference(sceneCaster, waterCaster, *surface, v.t, media);
             if (references[vi].pixels.empty())
                 references[vi] = traceView(reference, probe.camera()->getViewMatrix(), probe.camera()->getProjectionMatrix(),
@@ -299,6 +310,7 @@ int main(int argc, char** argv)
             const double captureAndTraceS = osg::Timer::instance()->delta_s(phase, osg::Timer::instance()->tick());
             r.eyeBelow = reference.eyeBelow(glm::dvec3(v.eye.x(), v.eye.y(), v.eye.z()));
             ViewErrors ve = measureView(references[vi], e, sceneCaster);
+            ve.drawnSurfacePx = drawnSurfaceError(e, *surface, v.t);
             r.waterPixels = ve.waterPixels;
             r.misses = ve.misses;
             r.tirMismatch = ve.tirMismatch;
@@ -313,6 +325,8 @@ int main(int argc, char** argv)
                 r.reflectionShownTexels = quantiles(c2);
                 r.reflectionNotShown = ve.reflectionNotShown;
                 r.fresnelError = quantiles(d);
+                std::vector<float> ds = ve.drawnSurfacePx;
+                r.drawnSurfacePx = quantiles(ds);
             }
             if (osg::ref_ptr<osg::Image> caustics = probe.readCaustics(*water)) {
                 r.nanPixels += countNonFinite(caustics.get());
@@ -358,6 +372,7 @@ int main(int argc, char** argv)
         summaries.push_back(summarize(tech.name, records, errors));
     }
     water->setSettings(new osgWater::WaterSettings(*base, osg::CopyOp::DEEP_COPY_ALL));
+    surface->setMeshLayout(sceneMesh);
 
     if (!writeJson(o.out + "/results.json", records, error) || !writeCsv(o.out + "/results.csv", records, error)) {
         std::cerr << "error: " << error << std::endl;
