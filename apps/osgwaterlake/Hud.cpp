@@ -24,6 +24,12 @@ std::string describeSettings(const WaterSettings& s)
     return o.str();
 }
 
+std::string describeSurface(const osgWater::WaterSurface& s)
+{
+    if (!s.usesGrid()) return "mesh user";
+    return std::string("mesh ") + osgWater::WaterSurface::meshLayoutName(s.getMeshLayout());
+}
+
 std::string describeCaustics(const osgWater::WaterNode& water)
 {
     const WaterSettings& s = *water.getSettings();
@@ -61,9 +67,9 @@ public:
         std::snprintf(line, sizeof(line), "%s   reflection %.2f ms   refraction %.2f ms   caustics %.2f ms (GPU)\n", fps,
                       p ? p->getReflectionMilliseconds() : -1.0, p ? p->getRefractionMilliseconds() : -1.0,
                       c ? c->getMilliseconds() : -1.0);
-        _text->setText(std::string(line) + describeSettings(*_water->getSettings()) + ", caustics " +
-                       describeCaustics(*_water) +
-                       "\nkeys: r reflection  f refraction  t technique  e reflection lookup  +/- steps  m fresnel  o rotation  k caustics  g gather  a mesh  x 2x2  y reflective  v environment  u under water  n model  l glow  s stats  arrows move");
+        _text->setText(std::string(line) + describeSettings(*_water->getSettings()) + ", " +
+                       describeSurface(*_water->getSurface()) + ", caustics " + describeCaustics(*_water) +
+                       "\nkeys: r reflection  f refraction  t technique  e reflection lookup  +/- steps  m fresnel  o rotation  k caustics  g gather  a caustics mesh  x 2x2  y reflective  v environment  i surface mesh  u under water  n model  l glow  s stats  arrows move");
         traverse(node, nv);
     }
 

@@ -7,5 +7,7 @@
 osg::ref_ptr<osg::Camera> createHud(osgWater::WaterNode* water, osg::Camera* mainCamera, int width, int height);
 //! One line describing the settings (also printed by the headless run).
 std::string describeSettings(const osgWater::WaterSettings& s);
+//! The surface's mesh: its layout, or "mesh user".
+std::string describeSurface(const osgWater::WaterSurface& s);
 //! The caustics state: off, or the gather in use and the texture/photon-grid sizes.
 std::string describeCaustics(const osgWater::WaterNode& water);

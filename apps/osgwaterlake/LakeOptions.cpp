@@ -51,6 +51,7 @@ void LakeOptions::describe(osg::ApplicationUsage& u)
     u.addCommandLineOption("--lookup <one-step|iterative|plane>", "Refraction lookup technique");
     u.addCommandLineOption("--reflection-lookup <search|offset|plane>", "Reflection lookup technique (default search)");
     u.addCommandLineOption("--calm", "Flat water: the scene's waves off");
+    u.addCommandLineOption("--mesh <rings|grid>", "The surface's mesh: rings around the eye (default) or the thesis's uniform grid");
     u.addCommandLineOption("--planes <height> <depth>", "Plane-offset lookups' planes, metres from the level (0: from the scene)");
     u.addCommandLineOption("--steps <n>", "Candidates of the iterative search (1-8)");
     u.addCommandLineOption("--fresnel <schlick|power|exact|reciprocal>", "Fresnel model");
@@ -151,6 +152,13 @@ bool LakeOptions::read(osg::ArgumentParser& args)
     if (args.read("--supersample")) _setters.push_back([](WaterSettings& w) { w.setCausticsSupersampling(true); });
     args.read("--caustics-tile", causticsTile);
     if (args.read("--calm")) calm = true;
+    if (args.read("--mesh", mesh)) {
+        osgWater::WaterSurface::MeshLayout layout;
+        if (!osgWater::WaterSurface::meshLayoutFromName(mesh, layout)) {
+            std::cerr << "error: --mesh rings|grid" << std::endl;
+            return false;
+        }
+    }
     if (args.read("--reflective-caustics")) _setters.push_back([](WaterSettings& w) { w.setReflectiveCaustics(true); });
     if (args.read("--caustics-size", n)) _setters.push_back([n](WaterSettings& w) { w.setCausticsResolution(n); });
     if (args.read("--photons", n)) _setters.push_back([n](WaterSettings& w) { w.setPhotonGridSize(n); });
@@ -178,6 +186,8 @@ void LakeOptions::apply(osgWater::WaterNode& water) const
     else s.setWaterModel(WaterSettings::WATER_THESIS);
     for (const auto& set : _setters) set(s);
     if (calm) water.getSurface()->setWaves({});
+    osgWater::WaterSurface::MeshLayout layout;
+    if (osgWater::WaterSurface::meshLayoutFromName(mesh, layout)) water.getSurface()->setMeshLayout(layout);
     if (causticsTile > 0.0) {
         s.setCausticsTileSize(float(causticsTile));
         osgWater::WaterSurface& surface = *water.getSurface();

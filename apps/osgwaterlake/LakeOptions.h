@@ -16,6 +16,7 @@ struct LakeOptions {
     double time = 10.0;            // simulation time of the first frame
     double causticsTile = 0.0;     // tileable caustics: the tile's side, the waves snapped to it (0: off)
     bool calm = false;             // the scene's waves off
+    std::string mesh;              // the surface's mesh layout (grid|rings), "" for the scene's
     bool headless = false;
     int frames = 60;
     bool compare = true;           // headless: also time the scene without water

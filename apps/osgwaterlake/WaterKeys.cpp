@@ -47,6 +47,12 @@ bool WaterKeys::handle(const osgGA::GUIEventAdapter& ea, osgGA::GUIActionAdapter
     case 'x': s.setCausticsSupersampling(!s.getCausticsSupersampling()); return true;
     case 'y': s.setReflectiveCaustics(!s.getReflectiveCaustics()); return true;
     case 'v': s.setEnvironmentMapEnabled(!s.getEnvironmentMapEnabled()); return true;
+    case 'i': {
+        osgWater::WaterSurface& surface = *_water->getSurface();
+        surface.setMeshLayout(surface.getMeshLayout() == osgWater::WaterSurface::MESH_GRID
+                                  ? osgWater::WaterSurface::MESH_EYE_RINGS : osgWater::WaterSurface::MESH_GRID);
+        return true;
+    }
     default: break;
     }
     auto toggle = _toggles.find(ea.getKey());
@@ -83,7 +89,8 @@ void WaterKeys::getUsage(osg::ApplicationUsage& u) const
     u.addKeyboardMouseBinding("r", "Toggle reflection");
     u.addKeyboardMouseBinding("f", "Toggle refraction");
     u.addKeyboardMouseBinding("t", "Next refraction lookup (iterative, plane offset, one-step)");
-    u.addKeyboardMouseBinding("e", "Switch reflection lookup (offset U + cR / plane offset)");
+    u.addKeyboardMouseBinding("e", "Next reflection lookup (search, offset U + cR, plane offset)");
+    u.addKeyboardMouseBinding("i", "Switch the surface's mesh (rings around the eye / the thesis's uniform grid)");
     u.addKeyboardMouseBinding("+/-", "More / fewer search steps");
     u.addKeyboardMouseBinding("m", "Next Fresnel model");
     u.addKeyboardMouseBinding("o", "Toggle refraction-camera rotation");

@@ -112,7 +112,8 @@ int runHeadless(osgViewer::Viewer& viewer, osg::Switch* scenes, osgWater::WaterN
         return 1;
     }
     std::cout << "screenshot: " << o.screenshot << std::endl;
-    std::cout << "settings: " << describeSettings(*water->getSettings()) << ", caustics " << describeCaustics(*water) << std::endl;
+    std::cout << "settings: " << describeSettings(*water->getSettings()) << ", " << describeSurface(*water->getSurface())
+              << ", caustics " << describeCaustics(*water) << std::endl;
     auto frameMs = [&](const Configuration& c) { return osgWaterApps::medianOfBlockMeans(c.ms, size_t(perBlock)); };
     const double first = frameMs(configs[0]), last = frameMs(configs.back());
     std::printf("frame time, median over %d alternating blocks of the mean of %d frames:\n", blocks, perBlock);
