@@ -491,6 +491,14 @@ void WaterSurface::finishBuiltIn(osg::Geometry& g) const
     g.setInitialBound(builtInBound());
 }
 
+namespace {
+// two triangles of a quad whose corners p0..p3 run counter-clockwise seen from above
+void addQuad(osg::DrawElementsUInt& tris, unsigned int p0, unsigned int p1, unsigned int p2, unsigned int p3)
+{
+    for (unsigned int v : { p0, p1, p2, p0, p2, p3 }) tris.push_back(v);
+}
+}
+
 osg::Geometry* WaterSurface::buildGrid() const
 {
     const unsigned int n = _resolution;
@@ -506,8 +514,7 @@ osg::Geometry* WaterSurface::buildGrid() const
     for (unsigned int j = 0; j + 1 < n; ++j)
         for (unsigned int i = 0; i + 1 < n; ++i) {
             const unsigned int a = j * n + i, b = a + 1, c = a + n, d = c + 1;
-            tris->push_back(a); tris->push_back(b); tris->push_back(d);
-            tris->push_back(a); tris->push_back(d); tris->push_back(c);
+            addQuad(*tris, a, b, d, c);
         }
     osg::Geometry* g = new osg::Geometry;
     g->setName("osgWater.grid");
@@ -545,10 +552,9 @@ osg::Geometry* WaterSurface::buildRings() const
     tris->reserve(n * m * 6);
     for (unsigned int i = 0; i < n; ++i)
         for (unsigned int j = 0; j < m; ++j) {
-            // counter-clockwise seen from above, as the grid's (ring 0 is one point: a = b there)
+            // a on ring i, b the next around it, c and d one ring out (ring 0 is one point: a = b there)
             const unsigned int a = i * m + j, b = i * m + (j + 1) % m, c = a + m, d = b + m;
-            tris->push_back(a); tris->push_back(d); tris->push_back(b);
-            tris->push_back(a); tris->push_back(c); tris->push_back(d);
+            addQuad(*tris, a, c, d, b);
         }
     osg::Geometry* g = new osg::Geometry;
     g->setName("osgWater.rings");
