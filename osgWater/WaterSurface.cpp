@@ -166,20 +166,28 @@ bool WaterSurface::meshLayoutFromName(const std::string& name, MeshLayout& layou
     return false;
 }
 
+namespace {
+// the rings' height H (at least RING_INNER_HEIGHT) and growth c for an eye and a reach
+struct RingScale {
+    double h, c;
+    RingScale(double eyeHeight, double reach)
+        : h(std::max(std::fabs(eyeHeight), WaterSurface::RING_INNER_HEIGHT)),
+          c(std::asinh(std::max(reach, 0.0) / h) / WaterSurface::RING_COUNT) {}
+    double radius(unsigned int i) const { return h * std::sinh(c * std::min(i, WaterSurface::RING_COUNT)); }
+};
+}
+
 double WaterSurface::ringRadius(unsigned int i, double eyeHeight, double reach)
 {
-    const double h = std::max(std::fabs(eyeHeight), RING_INNER_HEIGHT);
-    const double c = std::asinh(std::max(reach, 0.0) / h) / RING_COUNT;
-    return h * std::sinh(c * std::min(i, RING_COUNT));
+    return RingScale(eyeHeight, reach).radius(i);
 }
 
 double WaterSurface::ringCellSize(unsigned int i, double eyeHeight, double reach)
 {
     // dr/di = H c cosh(c i) = c sqrt(r^2 + H^2): radially each ring spans the angle c from an eye
     // at height H; around, a cell spans 2 pi r / RING_SEGMENTS
-    const double h = std::max(std::fabs(eyeHeight), RING_INNER_HEIGHT);
-    const double c = std::asinh(std::max(reach, 0.0) / h) / RING_COUNT;
-    const double r = ringRadius(i, eyeHeight, reach);
+    const RingScale ring(eyeHeight, reach);
+    const double h = ring.h, c = ring.c, r = ring.radius(i);
     return std::max(c * std::sqrt(r * r + h * h), kTwoPi * r / RING_SEGMENTS);
 }
 
