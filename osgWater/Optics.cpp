@@ -229,8 +229,20 @@ BottomHit iterativeSearch(const glm::vec3& U, const glm::vec3& R, int steps, con
     return best;
 }
 
+float frustumExit(const glm::mat4& proj, const glm::vec3& P, const glm::vec3& R)
+{
+    const glm::vec4 a = proj * glm::vec4(P, 1.0f), b = proj * glm::vec4(R, 0.0f);
+    // each side's distance, linear along the ray: w - x, w + x, w - y, w + y, and w
+    const float g0[5] = { a.w - a.x, a.w + a.x, a.w - a.y, a.w + a.y, a.w };
+    const float g1[5] = { b.w - b.x, b.w + b.x, b.w - b.y, b.w + b.y, b.w };
+    float t = INFINITY;
+    for (int i = 0; i < 5; ++i)
+        if (g1[i] < 0.0f && g0[i] >= 0.0f) t = std::min(t, g0[i] / -g1[i]);
+    return t;
+}
+
 BottomHit mirrorSearch(const glm::vec3& U, const glm::vec3& R, int steps, const DepthLookup& lookup, float tolerance,
-                       const glm::vec4& floorPlane)
+                       const glm::vec4& floorPlane, float tExit)
 {
     // a surface under the floor plane is seen as sky
     const DepthLookup aboveFloor = [&](const glm::vec3& P) {
@@ -251,7 +263,8 @@ BottomHit mirrorSearch(const glm::vec3& U, const glm::vec3& R, int steps, const 
     // f(t): how far U + t R lies in front of the surface on its camera ray; the hit is its first root
     float tLo = 0.0f, fLo = f0, tHi = -1.0f, fHi = 0.0f; // tHi < 0: no point behind a surface yet
     int side = 0; // the end the last candidate replaced: -1 the front one, 1 the back one
-    float t = std::max(glm::length(A - U), 1.0e-3f);
+    tExit *= 0.9999f; // on the texture's edge, not a rounding past it
+    float t = std::min(std::max(glm::length(A - U), 1.0e-3f), tExit);
     steps = std::min(std::max(steps, 1), 8);
     for (int i = 1; i <= steps; ++i) {
         const glm::vec3 W = U + t * R;
@@ -266,9 +279,11 @@ BottomHit mirrorSearch(const glm::vec3& U, const glm::vec3& R, int steps, const 
         // Illinois: an end kept twice in a row has its value halved, so the other end moves too
         if (f > 0.0f) { tLo = t; fLo = f; if (side < 0) fHi *= 0.5f; side = -1; }
         else { tHi = t; fHi = f; if (side > 0 && fLo < 1.0e29f) fLo *= 0.5f; side = 1; }
-        if (tHi < 0.0f) // still in front: the secant on the last two points, at most 4x further
-            t = fPrev > f && fPrev < 1.0e29f ? std::min(t + (t - tPrev) * f / (fPrev - f), 4.0f * t) : 2.0f * t;
-        else // bracketed: regula falsi (bisection next to the sky)
+        if (tHi < 0.0f) { // still in front: the secant on the last two points, at most 4x further
+            if (t >= tExit) break; // in front where it leaves the texture: it meets nothing the pass drew
+            t = std::min(fPrev > f && fPrev < 1.0e29f ? std::min(t + (t - tPrev) * f / (fPrev - f), 4.0f * t) : 2.0f * t,
+                         tExit);
+        } else // bracketed: regula falsi (bisection next to the sky)
             t = fLo < 1.0e29f ? tLo + (tHi - tLo) * fLo / (fLo - fHi) : 0.5f * (tLo + tHi);
     }
     if (best.error <= tolerance + 0.01f * glm::length(best.W - U)) return best;

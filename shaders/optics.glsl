@@ -129,6 +129,21 @@ bool owSurfaceAlongRay(sampler2D depthTex, owDepthPass pass, vec3 P, out vec3 A)
 
 struct owBottomHit { bool valid; vec3 W; vec3 A; float error; };
 
+// How far the ray P + t R (eye space of a pass) stays on the pass's texture: the largest t whose
+// point lies inside the frustum's four sides and in front of the camera (1e30: it never leaves).
+// Mirrored in osgWater::optics::frustumExit.
+float owFrustumExit(mat4 proj, vec3 P, vec3 R)
+{
+    vec4 a = proj * vec4(P, 1.0), b = proj * vec4(R, 0.0);
+    // each side's distance, linear along the ray: w - x, w + x, w - y, w + y, and w
+    float g0[5] = float[5](a.w - a.x, a.w + a.x, a.w - a.y, a.w + a.y, a.w);
+    float g1[5] = float[5](b.w - b.x, b.w + b.x, b.w - b.y, b.w + b.y, b.w);
+    float t = 1e30;
+    for (int i = 0; i < 5; ++i)
+        if (g1[i] < 0.0 && g0[i] >= 0.0) t = min(t, g0[i] / -g1[i]);
+    return t;
+}
+
 // The loop's static bound is the search steps' define (the includer imports OSGWATER_SEARCH_STEPS):
 // a software rasteriser pays for a loop up to its static bound more than for a uniform's count.
 #ifndef OSGWATER_SEARCH_STEPS
@@ -146,9 +161,10 @@ struct owBottomHit { bool valid; vec3 W; vec3 A; float error; };
 // behind U's height is no hit (the pass keeps a band beyond the level for the crests: a shore under
 // the troughs would hide the ray's true hit). Off the texture the pass sees nothing. Where U's own
 // line of sight sees no surface, t_1 comes from what the pass sees along R from its eye (the ray's
-// far end), and there is none when that sees none either. No candidate within `tolerance` + 1% of
-// its distance: the root's estimate in its bracket when there is one, else the ray went on past
-// everything: none.
+// far end), and there is none when that sees none either. Where the pass's texture ends, so does
+// the search: the candidates go no further than where the ray leaves it. No candidate within
+// `tolerance` + 1% of its distance: the root's estimate in its bracket when there is one, else the
+// ray went on past everything: none.
 owBottomHit owMirrorSearch(sampler2D depthTex, owDepthPass pass, vec3 U, vec3 R, int steps, float tolerance)
 {
     owBottomHit none = owBottomHit(false, U, U, 0.0);
@@ -159,7 +175,10 @@ owBottomHit owMirrorSearch(sampler2D depthTex, owDepthPass pass, vec3 U, vec3 R,
     owBottomHit best = owBottomHit(true, A, A, 1e30);
     float tLo = 0.0, fLo = f0, tHi = -1.0, fHi = 0.0; // tHi < 0: no point behind a surface yet
     int side = 0; // the end the last candidate replaced: -1 the front one, 1 the back one
-    float t = max(length(A - U), 1e-3);
+    // the candidates stay on the texture: one past its edge sees sky, and the search would step on
+    // past a hit it had not bracketed yet (a far sky dome near the texture's edge)
+    float tExit = pass.offTextureSky ? 0.9999 * owFrustumExit(pass.proj, U, R) : 1e30;
+    float t = min(max(length(A - U), 1e-3), tExit);
     for (int i = 1; i <= OSGWATER_SEARCH_STEPS; ++i) {
         if (i > steps) break;
         vec3 W = U + t * R;
@@ -174,9 +193,10 @@ owBottomHit owMirrorSearch(sampler2D depthTex, owDepthPass pass, vec3 U, vec3 R,
         // Illinois: an end kept twice in a row has its value halved, so the other end moves too
         if (f > 0.0) { tLo = t; fLo = f; if (side < 0) fHi *= 0.5; side = -1; }
         else { tHi = t; fHi = f; if (side > 0 && fLo < 1e29) fLo *= 0.5; side = 1; }
-        if (tHi < 0.0) // still in front: the secant on the last two points, at most 4x further
-            t = fPrev > f && fPrev < 1e29 ? min(t + (t - tPrev) * f / (fPrev - f), 4.0 * t) : 2.0 * t;
-        else // bracketed: regula falsi (bisection next to the sky)
+        if (tHi < 0.0) { // still in front: the secant on the last two points, at most 4x further
+            if (t >= tExit) break; // in front where it leaves the texture: it meets nothing the pass drew
+            t = min(fPrev > f && fPrev < 1e29 ? min(t + (t - tPrev) * f / (fPrev - f), 4.0 * t) : 2.0 * t, tExit);
+        } else // bracketed: regula falsi (bisection next to the sky)
             t = fLo < 1e29 ? tLo + (tHi - tLo) * fLo / (fLo - fHi) : 0.5 * (tLo + tHi);
     }
     if (best.error <= tolerance + 0.01 * length(best.W - U)) return best;

@@ -1,6 +1,7 @@
 // Optics (the CPU mirror of shaders/optics.glsl) against closed forms and hard cases.
 #include <osgWater/Optics>
 #include <osgWater/WaterSettings>
+#include <glm/gtc/matrix_transform.hpp>
 #include <algorithm>
 #include <gtest/gtest.h>
 #include <cmath>
@@ -297,6 +298,72 @@ TEST(Optics, MirrorSearchClosesInOnANearWallItOvershot)
         previous = err;
     }
     EXPECT_LT(previous, 0.01f) << "metres, with 8 steps";
+}
+
+namespace {
+// a sky dome around the reflection pass's eye (the origin), seen only within the pass's frustum:
+// a point off the texture sees sky, as the renderer's lookup says
+struct DomeOnTexture {
+    glm::mat4 proj;
+    glm::vec3 centre;
+    float radius;
+    DepthSample operator()(const glm::vec3& P) const
+    {
+        const glm::vec4 c = proj * glm::vec4(P, 1.0f);
+        if (!(c.w > 0.0f) || std::fabs(c.x) > c.w || std::fabs(c.y) > c.w) return { false, 0.0f };
+        return { true, hit(glm::vec3(0.0f), glm::normalize(P)).z };
+    }
+    // the exact hit of U + s R (U inside the dome)
+    glm::vec3 hit(const glm::vec3& U, const glm::vec3& R) const
+    {
+        const float b = glm::dot(U - centre, R), c = glm::dot(U - centre, U - centre) - radius * radius;
+        return U + (-b + std::sqrt(b * b - c)) * R;
+    }
+    bool onTexture(const glm::vec3& X) const
+    {
+        const glm::vec4 c = proj * glm::vec4(X, 1.0f);
+        return c.w > 0.0f && std::fabs(c.x) <= c.w && std::fabs(c.y) <= c.w;
+    }
+};
+}
+
+TEST(Optics, MirrorSearchFindsAFarDomeNearTheTexturesEdge)
+{
+    // a dome of 110 m whose centre lies 30 m ahead of the eye, the water's points 2 m below the eye:
+    // mirror rays that meet the dome
+    // near the texture's edge. Secant steps from the first guess overshoot the curved dome past the
+    // edge, where the pass sees sky; kept on the texture they bracket the hit
+    const DomeOnTexture dome{ glm::perspective(glm::radians(90.0f), 1.0f, 0.1f, 1000.0f), glm::vec3(0.0f, 0.0f, -30.0f), 110.0f };
+    const DepthLookup lookup = std::cref(dome);
+    int rays = 0, missedUncapped = 0;
+    double worst = 0.0;
+    for (float ux = -6.0f; ux <= 6.0f; ux += 3.0f)
+        for (float ax = -1.2f; ax <= 1.21f; ax += 0.05f)
+            for (float ay = -0.1f; ay <= 0.91f; ay += 0.05f) {
+                const glm::vec3 U(ux, -2.0f, -8.0f), R = glm::normalize(glm::vec3(ax, ay, -1.0f));
+                const glm::vec3 X = dome.hit(U, R);
+                if (!dome.onTexture(X)) continue;
+                ++rays;
+                const BottomHit uncapped = mirrorSearch(U, R, 3, lookup, 0.01f);
+                if (!uncapped.valid || glm::length(uncapped.W - X) > 0.02f * glm::length(X - U)) ++missedUncapped;
+                const BottomHit h = mirrorSearch(U, R, 3, lookup, 0.01f, glm::vec4(0, 0, 0, 1), frustumExit(dome.proj, U, R));
+                ASSERT_TRUE(h.valid) << ux << " " << ax << " " << ay;
+                worst = std::max(worst, double(glm::length(h.W - X) / glm::length(X - U)));
+            }
+    RecordProperty("rays", rays);
+    RecordProperty("missed_without_the_edge", missedUncapped);
+    EXPECT_GT(missedUncapped, 0) << "the case the edge is for: without it some of these rays find no hit";
+    EXPECT_LT(worst, 0.011) << "relative to the hit's distance (the search's tolerance: 1 cm + 1%)";
+}
+
+TEST(Optics, FrustumExitIsWhereTheRayLeavesTheTexture)
+{
+    const glm::mat4 proj = glm::perspective(glm::radians(90.0f), 1.0f, 0.1f, 1000.0f);
+    // a 90 degree frustum: its sides are x = +-z, y = +-z
+    EXPECT_NEAR(frustumExit(proj, glm::vec3(0, 0, -10), glm::vec3(1, 0, 0)), 10.0f, 1e-3f);
+    EXPECT_NEAR(frustumExit(proj, glm::vec3(0, 0, -10), glm::normalize(glm::vec3(0, -1, 1))), 5.0f * std::sqrt(2.0f), 1e-3f);
+    EXPECT_TRUE(std::isinf(frustumExit(proj, glm::vec3(0, 0, -10), glm::vec3(0, 0, -1)))) << "straight ahead: never";
+    EXPECT_NEAR(frustumExit(proj, glm::vec3(0, 0, -10), glm::vec3(0, 0, 1)), 10.0f, 1e-3f) << "back to the eye";
 }
 
 TEST(Optics, SkyIsAMissNotABottom)
