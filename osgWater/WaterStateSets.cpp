@@ -66,7 +66,7 @@ WaterStateSets::WaterStateSets()
     _water->addUniform(waves.get());
     _water->addUniform(phases.get());
     const char* floats[] = { "osgWater_Level", "osgWater_PhotonExtinction", "osgWater_FresnelQ", "osgWater_ReflectionScale",
-                             "osgWater_UnderwaterScale", "osgWater_SearchTolerance", "osgWater_WaveBound" };
+                             "osgWater_UnderwaterScale", "osgWater_SearchTolerance", "osgWater_WaveBound", "osgWater_GridCell" };
     for (const char* f : floats) _water->addUniform(new osg::Uniform(f, 0.0f));
     _water->addUniform(new osg::Uniform("osgWater_WaveCount", 0));
     _water->addUniform(new osg::Uniform("osgWater_SearchSteps", 3));
@@ -121,6 +121,7 @@ void WaterStateSets::applySettings(const WaterSettings& s, const WaterSurface& s
     const osg::Vec2f half(0.5f * surface.getSize(), 0.5f * surface.getSize());
     const osg::Vec2f lo = surface.getCenter() - half, hi = surface.getCenter() + half;
     w->getUniform("osgWater_SurfaceSquare")->set(osg::Vec4f(lo.x(), lo.y(), hi.x(), hi.y()));
+    w->getUniform("osgWater_GridCell")->set(surface.getSize() / float(std::max(surface.getResolution(), 2u) - 1));
     setDefineIf(w, "OSGWATER_GRID", surface.usesGrid());
     setDefineIf(w, "OSGWATER_RINGS", surface.usesGrid() && surface.getMeshLayout() == WaterSurface::MESH_EYE_RINGS);
     setDefineIf(w, "OSGWATER_ONE_STEP", s.getRefractionLookup() == WaterSettings::ONE_STEP);

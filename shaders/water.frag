@@ -8,12 +8,18 @@
 
 in vec3 vLocal;
 in vec3 vMeshNormal;
+in float vDrawnError;
 
 void main()
 {
 #ifdef OSGWATER_GRID
     vec3 N;
-    vec3 U = waterOnSightRay(osgWater_EyeLocal, vLocal, N);
+#ifdef OSGWATER_EYE_BELOW
+    const float eyeSide = -1.0;
+#else
+    const float eyeSide = 1.0;
+#endif
+    vec3 U = waterOnSightRay(osgWater_EyeLocal, vLocal, vDrawnError, eyeSide, N);
 #else
     vec3 U = vLocal;
     vec3 N = owSafeNormalize(vMeshNormal, vec3(0.0, 0.0, 1.0));

@@ -7,6 +7,11 @@
 
 out vec3 vLocal;
 out vec3 vMeshNormal;
+out float vDrawnError; // how far the drawn mesh can lie from the analytic surface here, metres
+
+#if defined(OSGWATER_GRID) && !defined(OSGWATER_RINGS)
+uniform float osgWater_GridCell; // the uniform grid's spacing, metres
+#endif
 
 #ifdef OSGWATER_RINGS
 uniform vec3 osgWater_EyeLocal;
@@ -15,8 +20,9 @@ const float kRingCount = 256.0;      // WaterSurface::RING_COUNT
 const float kRingSegments = 128.0;   // WaterSurface::RING_SEGMENTS
 const float kRingInnerHeight = 0.01; // WaterSurface::RING_INNER_HEIGHT
 
-// gl_Vertex: ring i of the rings evenly spaced out to the square's corners (WaterSurface::buildRings)
-vec4 ringVertex()
+// gl_Vertex: ring i of the rings evenly spaced out to the square's corners (WaterSurface::buildRings);
+// `cell`: the size of its cells
+vec4 ringVertex(out float cell)
 {
     vec2 centre = 0.5 * (osgWater_SurfaceSquare.xy + osgWater_SurfaceSquare.zw);
     vec2 fromCentre = gl_Vertex.xy - centre;
@@ -29,7 +35,7 @@ vec4 ringVertex()
     vec2 far = max(abs(c - osgWater_SurfaceSquare.xy), abs(c - osgWater_SurfaceSquare.zw));
     float growth = asinh(length(far) / h) / kRingCount;
     float r = h * sinh(growth * i);
-    float cell = max(growth * sqrt(r * r + h * h), 6.2831853 * r / kRingSegments);
+    cell = max(growth * sqrt(r * r + h * h), 6.2831853 * r / kRingSegments);
     // pulled onto the square: a triangle of clamped vertices lies inside it, and the rings, which
     // reach past it, still cover all of it (no discard off the square, which would keep a GPU from
     // testing depth before shading)
@@ -41,10 +47,14 @@ vec4 ringVertex()
 void main()
 {
     vec4 v = gl_Vertex;
+    vDrawnError = 0.0;
 #if defined(OSGWATER_RINGS)
-    v = ringVertex();
+    float cell;
+    v = ringVertex(cell);
+    vDrawnError = waterDrawnErrorBound(cell, true);
 #elif defined(OSGWATER_GRID)
     v.z = waterHeight(v.xy);
+    vDrawnError = waterDrawnErrorBound(osgWater_GridCell, false);
 #endif
     vLocal = v.xyz;
     vMeshNormal = gl_Normal;

@@ -44,27 +44,74 @@ vec3 waterHeightAndSlope(vec2 p)
     return r;
 }
 
-// Where the line of sight from C through V (a point of a drawn mesh, near the surface) meets the
-// analytic surface, and the unit normal there: one Newton step along the ray from V, kept when it
-// gets closer (a ray grazing a crest can send it far off). On the eye's rings V is within
-// millimetres of the surface near the eye (a centimetre or so where they fade a wave), and the step
-// takes it to a small fraction of that. What a fragment shades: the drawn mesh only decides which
-// pixels hold water.
-vec3 waterOnSightRay(vec3 C, vec3 V, out vec3 N)
+// How far a mesh whose cells are `cell` metres across can lie from the analytic surface: per wave,
+// what its fade leaves out (`faded`: the vertices at waterHeightDrawn, else at waterHeight) and the
+// sag of a chord between vertices, a (1 - cos(pi cell / wavelength)), at most 2a for a wave the
+// cells alias.
+float waterDrawnErrorBound(float cell, bool faded)
 {
-    vec3 hs = waterHeightAndSlope(V.xy);
-    N = normalize(vec3(-hs.yz, 1.0));
+    float e = 0.0;
+    for (int i = 0; i < 8; ++i) {
+        if (i >= osgWater_WaveCount) break;
+        vec4 w = osgWater_Waves[i];
+        float cellsPerWave = 6.2831853 / (max(length(w.xy), 1e-9) * cell);
+        float keep = faded ? smoothstep(2.0, 4.0, cellsPerWave) : 1.0;
+        e += abs(w.z) * (1.0 - keep * cos(3.1415927 * min(1.0 / cellsPerWave, 1.0)));
+    }
+    return e;
+}
+
+// Where the line of sight from C through V first meets the analytic surface, and the unit normal
+// there. V: a point of a drawn mesh within `bound` metres of the surface, up or down; eyeSide: 1
+// for an eye above the surface, -1 below. The surface can only cross the ray where the ray lies
+// within `bound` of V's height: a window around V. Its start lies on the eye's side; the first
+// sign change of f = z - h on a few samples across the window brackets the crossing, and regula
+// falsi (Illinois) closes in on it. No sign change (the window's start already past a crest the
+// ray grazed before V, or a crest between two samples): V itself. The slope the normal needs then
+// gives one Newton step for free, kept inside the bracket. One path for every fragment, at most
+// eight height evaluations and one of the slope: llvmpipe pays for every side of a branch (early
+// exits measured no faster), so there is no cheaper path to branch to. What a fragment shades: the
+// drawn mesh only decides which pixels hold water.
+const int kSightSamples = 4;
+const int kSightRefinements = 3;
+
+float waterAbove(vec3 C, vec3 D, float t, float eyeSide)
+{
+    vec3 P = C + t * D;
+    return eyeSide * (P.z - waterHeight(P.xy));
+}
+
+vec3 waterOnSightRay(vec3 C, vec3 V, float bound, float eyeSide, out vec3 N)
+{
     vec3 D = V - C;
-    float s = length(D);
-    if (!(s > 1e-9)) return V;
+    float s = max(length(D), 1e-9);
     D /= s;
-    float f = V.z - hs.x, df = D.z - dot(hs.yz, D.xy);
-    if (!(abs(df) > 1e-6)) return V;
-    vec3 P = V - (f / df) * D;
-    vec3 hp = waterHeightAndSlope(P.xy);
-    if (!(abs(P.z - hp.x) < abs(f))) return V;
-    N = normalize(vec3(-hp.yz, 1.0));
-    return P;
+    float w = bound / max(abs(D.z), 1e-3);
+    float tLo = max(s - w, 0.0), fLo = waterAbove(C, D, tLo, eyeSide);
+    float tHi = -1.0, fHi = 0.0;
+    for (int k = 1; k <= kSightSamples; ++k) {
+        if (!(fLo > 0.0) || tHi >= 0.0) break; // the window starts past the surface, or bracketed
+        float t = s + w * (2.0 * float(k) / float(kSightSamples) - 1.0);
+        float f = waterAbove(C, D, t, eyeSide);
+        if (f <= 0.0) { tHi = t; fHi = f; }
+        else { tLo = t; fLo = f; }
+    }
+    int side = 0;
+    for (int k = 0; k < kSightRefinements; ++k) {
+        if (tHi < 0.0) break;
+        float t = tLo + (tHi - tLo) * fLo / (fLo - fHi);
+        float f = waterAbove(C, D, t, eyeSide);
+        if (f > 0.0) { tLo = t; fLo = f; if (side < 0) fHi *= 0.5; side = -1; }
+        else { tHi = t; fHi = f; if (side > 0) fLo *= 0.5; side = 1; }
+    }
+    vec3 P = tHi < 0.0 ? V : C + (tLo + (tHi - tLo) * fLo / (fLo - fHi)) * D;
+    vec3 hs = waterHeightAndSlope(P.xy);
+    N = normalize(vec3(-hs.yz, 1.0));
+    // the slope the normal needs gives a last Newton step for free, kept inside the bracket
+    float df = D.z - dot(hs.yz, D.xy);
+    float t = dot(P - C, D) - (P.z - hs.x) / (abs(df) > 1e-6 ? df : 1e30);
+    if (tHi >= 0.0) t = clamp(t, min(tLo, tHi), max(tLo, tHi));
+    return C + t * D;
 }
 
 vec3 waterNormal(vec2 p)
