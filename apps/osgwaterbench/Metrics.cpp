@@ -86,6 +86,11 @@ ViewErrors measureView(const ReferenceImage& ref, const Estimate& e, const RayCa
                 continue;
             }
             if (e.bottom.valid() && !covered) { ++v.coverageMismatch; continue; }
+            if (e.shaded.valid()) { // both see water here
+                const osg::Vec4f u = px(e.shaded.get(), x, y);
+                if (u.w() > 1.5f && u.w() < 2.5f)
+                    v.shadedPointCm.push_back(100.0f * glm::length(glm::vec3(u.x(), u.y(), u.z()) - r.U));
+            }
             if (e.fresnel.valid()) {
                 const osg::Vec4f f = px(e.fresnel.get(), x, y);
                 if (f.w() > 1.5f && std::isfinite(f.x())) v.fresnel.push_back(std::fabs(f.x() - r.fresnel));
@@ -120,10 +125,30 @@ ViewErrors measureView(const ReferenceImage& ref, const Estimate& e, const RayCa
             v.refractionM.push_back(float(glm::length(d)));
             if (r.flags & PixelRef::JACOBIAN) {
                 const glm::dvec2 p(glm::dot(glm::dvec3(r.pixelsPerMetre[0]), d), glm::dot(glm::dvec3(r.pixelsPerMetre[1]), d));
-                v.refractionPx.push_back(float(glm::length(p)));
+                const float errPx = float(glm::length(p));
+                v.refractionPx.push_back(errPx);
+                if (errPx > 2.0f) ++v.refractionCauses[int(refractionCause(e, scene, x, y, r, S))];
             }
         }
     return v;
+}
+
+RefractionCause refractionCause(const Estimate& e, const RayCaster& scene, int x, int y, const PixelRef& r,
+                                const glm::dvec3& shown)
+{
+    if (e.shaded.valid()) {
+        const osg::Vec4f u = px(e.shaded.get(), x, y);
+        if (glm::length(glm::dvec3(u.x(), u.y(), u.z()) - glm::dvec3(r.U)) > 0.02) return CAUSE_SHADED_POINT;
+    }
+    const glm::dvec3 C(e.refractionEye.x(), e.refractionEye.y(), e.refractionEye.z()), X(r.X);
+    // the pass draws one side of its clip plane: what lies on the other side hides nothing
+    const double plane = e.eyeBelow ? e.level - e.clearance : e.level + e.clearance;
+    const glm::dvec3 toX = X - C;
+    double t0 = 0.0;
+    if (e.eyeBelow ? C.z < plane : C.z > plane) t0 = std::fabs(toX.z) > 1e-12 ? (plane - C.z) / toX.z : 1.0;
+    if (t0 < 1.0 && scene.intersect(C, toX, std::max(t0, 0.0), 1.0 - 1e-6).hit) return CAUSE_HIDDEN;
+    // the shown point's distance from the pass's eye against the exact hit's
+    return glm::length(shown - C) < glm::length(toX) ? CAUSE_IN_FRONT : CAUSE_BEHIND;
 }
 
 std::vector<float> drawnSurfaceError(const Estimate& e, const osgWater::WaterSurface& surface, double t)
@@ -135,8 +160,8 @@ std::vector<float> drawnSurfaceError(const Estimate& e, const osgWater::WaterSur
             const osg::Vec4f d = px(e.drawn.get(), x, y);
             if (!(d.w() > 1.5f && d.w() < 2.5f) || !std::isfinite(d.x() + d.y() + d.z())) continue;
             const osg::Vec3d drawn(d.x(), d.y(), d.z()), exact(d.x(), d.y(), surface.height(d.x(), d.y(), t));
-            const osg::Vec3d a = drawn * e.localToWindow, b = exact * e.localToWindow;
-            out.push_back(float(osg::Vec2d(a.x() - b.x(), a.y() - b.y()).length()));
+            const osg::Vec3d a = drawn - e.eye, b = exact - e.eye;
+            out.push_back(float(std::atan2((a ^ b).length(), a * b) * e.pixelsPerRadian));
         }
     return out;
 }

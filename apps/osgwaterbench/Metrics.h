@@ -23,7 +23,9 @@ Quantiles quantiles(std::vector<float>& v);
 struct Estimate {
     osg::ref_ptr<osg::Image> color, bottom, reflection, fresnel; //!< float RGBA, the view's size
     osg::ref_ptr<osg::Image> drawn;    //!< the drawn mesh's point under each water pixel (DEBUG_DRAWN_SURFACE)
-    osg::Matrixd localToWindow;        //!< local frame -> window pixels (view, projection, viewport)
+    osg::ref_ptr<osg::Image> shaded;   //!< the surface point each water pixel shades (DEBUG_SURFACE)
+    osg::Vec3d eye;                    //!< the view's eye, local frame
+    double pixelsPerRadian = 0.0;      //!< the view's focal length in pixels (at the centre of the view)
     osg::Matrixd refractionView;       //!< local -> refraction pass eye space
     osg::Vec3d refractionEye;          //!< the refraction camera's position, local frame
     bool eyeBelow = false;
@@ -31,6 +33,12 @@ struct Estimate {
     osg::Matrixd reflectionMVP;        //!< local -> reflection pass clip space
     int reflectionSize = 512;
 };
+
+//! Why the refraction shows a pixel more than 2 px off: the render shades another point of the
+//! surface (its refracted ray starts elsewhere), the exact hit is hidden from the refraction pass's
+//! eye (no single depth layer holds it), or the search settled on a point the pass shows in front
+//! of the exact hit (an occluder, the near side of an edge) or behind it.
+enum RefractionCause { CAUSE_SHADED_POINT, CAUSE_HIDDEN, CAUSE_IN_FRONT, CAUSE_BEHIND, CAUSE_COUNT };
 
 struct ViewErrors {
     std::vector<float> refractionPx;     //!< apparent-position error of the refracted point, screen pixels
@@ -44,6 +52,8 @@ struct ViewErrors {
     size_t tirMismatch = 0;              //!< total internal reflection in one and not the other
     size_t coverageMismatch = 0;         //!< water in one of the reference and the render, not in the other
     std::vector<float> drawnSurfacePx;   //!< the drawn mesh's height error, screen pixels (drawnSurfaceError)
+    std::vector<float> shadedPointCm;    //!< the point the render shades against the exact crossing, centimetres
+    size_t refractionCauses[CAUSE_COUNT] = {}; //!< the refraction's pixels over 2 px, by cause
     size_t nanPixels = 0;                //!< pixels with a NaN or Inf in any read-back output
 };
 
@@ -52,9 +62,15 @@ struct ViewErrors {
 bool shownPoint(const osg::Vec4f& estimate, const Estimate& e, const RayCaster& scene, glm::dvec3& out);
 
 ViewErrors measureView(const ReferenceImage& ref, const Estimate& e, const RayCaster& scene);
+//! The cause of one pixel's refraction error (`shown`: the point the pass shows there).
+RefractionCause refractionCause(const Estimate& e, const RayCaster& scene, int x, int y, const PixelRef& r,
+                                const glm::dvec3& shown);
 //! Per pixel of the render's water drawn by the built-in mesh: the rasterised point V against the
-//! analytic surface under it, (V.x, V.y, h(V.x, V.y)), both projected to the window: how far on
-//! screen the drawn surface lies from the exact one there. Empty over a user mesh.
+//! analytic surface under it, (V.x, V.y, h(V.x, V.y)): the angle between them at the eye, in pixels
+//! (the focal length's: exact at the view's centre, up to 1 / cos^2 of the half field of view
+//! more than the window's pixels at its edge). How far on screen the drawn surface lies from the
+//! exact one there; an angle stays finite where a projection would not, beside an eye on the
+//! water. Empty over a user mesh.
 std::vector<float> drawnSurfaceError(const Estimate& e, const osgWater::WaterSurface& surface, double t);
 size_t countNonFinite(const osg::Image* img);
 

@@ -96,14 +96,18 @@ Estimate Probe::capture(osgWater::WaterNode& water, double t)
     water.setDebugOutput(osgWater::DEBUG_DRAWN_SURFACE);
     _viewer->frame(t);
     e.drawn = read(_target.get());
+    water.setDebugOutput(osgWater::DEBUG_SURFACE);
+    _viewer->frame(t);
+    e.shaded = read(_target.get());
     water.setDebugOutput(before);
     if (saved.valid()) {
         camera()->attach(osg::Camera::COLOR_BUFFER, saved.get());
         camera()->dirtyAttachmentMap();
     }
 
-    e.localToWindow = camera()->getViewMatrix() * camera()->getProjectionMatrix() *
-                      camera()->getViewport()->computeWindowMatrix(); // the water is not transformed
+    // the water is not transformed: its local frame is the world's
+    e.eye = osg::Matrixd::inverse(camera()->getViewMatrix()).getTrans();
+    e.pixelsPerRadian = camera()->getProjectionMatrix()(1, 1) * 0.5 * camera()->getViewport()->height();
     e.level = water.getSurface()->getLevel();
     e.clearance = water.getSurface()->getMaxAmplitude() + water.getSettings()->getClipOffset();
     if (osgWater::ViewPasses* p = water.getViewPasses(camera())) {

@@ -51,6 +51,10 @@ nlohmann::json toJson(const Record& r)
     j["reflection_not_shown"] = r.reflectionNotShown;
     addQuantiles(j, "fresnel_error", r.fresnelError);
     addQuantiles(j, "drawn_surface_px", r.drawnSurfacePx);
+    addQuantiles(j, "shaded_point_cm", r.shadedPointCm);
+    j["shaded_point_over_2cm_share"] = number(r.shadedPointCm.over2);
+    const char* causes[CAUSE_COUNT] = { "shaded_point", "hidden", "in_front", "behind" };
+    for (int c = 0; c < CAUSE_COUNT; ++c) j[std::string("refraction_over2_") + causes[c]] = r.refractionCauses[c];
     j["refraction_misses"] = r.misses;
     j["tir_mismatch"] = r.tirMismatch;
     j["coverage_mismatch"] = r.coverageMismatch;
@@ -332,15 +336,17 @@ bool writeDocs(const std::string& dir, const RunInfo& info, const std::vector<Re
        << "waves send back under the level), which no lookup in that texture can find otherwise; \"not shown\": the share "
        << "of the others. Coverage: pixels where one of the reference and the render sees water and the other does "
        << "not, over the reference's water pixels. Surface: the drawn mesh against the analytic surface, per "
-       << "pixel of the render's water the rasterised point and the exact surface point under it (same x, y) "
-       << "projected to the window, in pixels. "
+       << "pixel of the render's water the rasterised point and the exact surface point under it (same x, y): "
+       << "the angle between them at the eye, in pixels of the view's focal length. Shaded: the share of the "
+       << "render's water pixels whose shaded point (the one its colour is worked out at) lies more than 2 cm "
+       << "from where the pixel's ray first meets the waves. "
        << "Caustics: relative RMSE of the caustics texture against photon tracing (blocks of "
        << "texels about 1.2 m on a side, whatever the texture's window and resolution; the reference's own "
        << "counting noise in brackets).\n\n"
        << "| technique | ratio | frame ms | refr. px median | p95 | p99 | max | > 2 px | refr. m median "
           "| refl. texels median | p99 | shown p99 | not shown | Fresnel err. median | max | caustics RMSE "
-          "| coverage | surface px median | p99 | NaN px |\n"
-       << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+          "| coverage | surface px median | p99 | shaded > 2 cm | NaN px |\n"
+       << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
     for (const Summary& s : summaries)
         md << "| " << s.technique << " | " << fmt(s.ratioInView, 2, "×") << " | " << fmt(s.frameMs, 1) << " | "
            << fmt(s.refractionPx.median, 3) << " | " << fmt(s.refractionPx.p95, 2) << " | " << fmt(s.refractionPx.p99, 2)
@@ -350,13 +356,13 @@ bool writeDocs(const std::string& dir, const RunInfo& info, const std::vector<Re
            << pct(s.reflectionNotShownShare) << " | " << fmt(s.fresnel.median, 4) << " | " << fmt(s.fresnel.max, 3)
            << " | " << pct(s.causticsRmse) << (std::isfinite(s.causticsNoise) ? " (" + pct(s.causticsNoise) + ")" : "")
            << " | " << pct(s.coverageMismatchShare) << " | " << fmt(s.drawnSurfacePx.median, 3) << " | "
-           << fmt(s.drawnSurfacePx.p99, 2) << " | " << s.nanPixels << " |\n";
+           << fmt(s.drawnSurfacePx.p99, 2) << " | " << pct(s.shadedPointCm.over2) << " | " << s.nanPixels << " |\n";
 
     md << "\n## Views (default technique)\n\n"
        << "| view | eye | water px | frame ms | plain ms | ratio | refr. px median | p99 | max | refr. m median "
           "| refl. texels median | p99 | shown p99 | not shown | Fresnel err. median | caustics RMSE | coverage "
-          "| surface px median | p99 | NaN px |\n"
-       << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+          "| surface px median | p99 | shaded > 2 cm | NaN px |\n"
+       << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
     for (const Record& r : records) {
         if (r.technique != "default") continue;
         md << "| " << r.view << " | " << (r.eyeBelow ? "under water" : "above") << " | " << r.waterPixels << " | "
@@ -368,8 +374,23 @@ bool writeDocs(const std::string& dir, const RunInfo& info, const std::vector<Re
                                        : std::numeric_limits<double>::quiet_NaN())
            << " | " << fmt(r.fresnelError.median, 4) << " | " << pct(r.causticsErrors.relativeRmse) << " | "
            << pct(r.waterPixels ? double(r.coverageMismatch) / double(r.waterPixels) : std::numeric_limits<double>::quiet_NaN())
-           << " | " << fmt(r.drawnSurfacePx.median, 3) << " | " << fmt(r.drawnSurfacePx.p99, 2) << " | " << r.nanPixels
+           << " | " << fmt(r.drawnSurfacePx.median, 3) << " | " << fmt(r.drawnSurfacePx.p99, 2) << " | "
+           << pct(r.shadedPointCm.over2) << " | " << r.nanPixels
            << " |\n";
+    }
+    md << "\n## Refraction: the pixels over 2 px by cause (default technique)\n\n"
+       << "Shares of each view's measured refraction pixels. Shaded point: the pixel shades a surface point more "
+          "than 2 cm from where its ray meets the waves, so its refracted ray starts elsewhere. Hidden: the exact "
+          "hit is not in the refraction pass's view (something between its eye and the hit), so no single depth "
+          "layer holds it. In front / behind: the search settled on a point the pass shows nearer its eye than the "
+          "exact hit (an occluder, the near side of an edge) or farther.\n\n"
+       << "| view | > 2 px | shaded point | hidden | in front | behind |\n|---|---|---|---|---|---|\n";
+    for (const Record& r : records) {
+        if (r.technique != "default" || !r.refractionPx.n) continue;
+        const double n = double(r.refractionPx.n);
+        md << "| " << r.view << " | " << pct(r.refractionPx.over2);
+        for (size_t c : r.refractionCauses) md << " | " << pct(double(c) / n);
+        md << " |\n";
     }
     md << "\nEvery technique × view is in `results.csv` / `results.json` beside the run's output.\n";
     if (!md) error = "cannot write " + dir + "/BENCHMARKS.md";

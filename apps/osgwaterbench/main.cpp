@@ -77,7 +77,7 @@ Summary summarize(const std::string& name, const std::vector<Record>& records, s
     Summary s;
     s.technique = name;
     std::vector<double> ratios, frames, caustics, noise;
-    std::vector<float> px, m, refl, reflShown, fres, drawn;
+    std::vector<float> px, m, refl, reflShown, fres, drawn, shaded;
     size_t notShown = 0, coverageMismatch = 0, waterPixels = 0;
     for (size_t i = 0; i < records.size(); ++i) {
         const Record& r = records[i];
@@ -106,6 +106,7 @@ Summary summarize(const std::string& name, const std::vector<Record>& records, s
             }
         }
         drawn.insert(drawn.end(), errors[i].drawnSurfacePx.begin(), errors[i].drawnSurfacePx.end());
+        shaded.insert(shaded.end(), errors[i].shadedPointCm.begin(), errors[i].shadedPointCm.end());
         fres.insert(fres.end(), errors[i].fresnel.begin(), errors[i].fresnel.end());
         errors[i] = ViewErrors(); // pooled: free the per-pixel values
     }
@@ -123,6 +124,7 @@ Summary summarize(const std::string& name, const std::vector<Record>& records, s
     if (waterPixels) s.coverageMismatchShare = double(coverageMismatch) / double(waterPixels);
     s.fresnel = quantiles(fres);
     s.drawnSurfacePx = quantiles(drawn);
+    s.shadedPointCm = quantiles(shaded);
     return s;
 }
 
@@ -325,8 +327,10 @@ int main(int argc, char** argv)
                 r.reflectionShownTexels = quantiles(c2);
                 r.reflectionNotShown = ve.reflectionNotShown;
                 r.fresnelError = quantiles(d);
-                std::vector<float> ds = ve.drawnSurfacePx;
+                std::vector<float> ds = ve.drawnSurfacePx, sp = ve.shadedPointCm;
                 r.drawnSurfacePx = quantiles(ds);
+                r.shadedPointCm = quantiles(sp);
+                std::copy(std::begin(ve.refractionCauses), std::end(ve.refractionCauses), std::begin(r.refractionCauses));
             }
             if (osg::ref_ptr<osg::Image> caustics = probe.readCaustics(*water)) {
                 r.nanPixels += countNonFinite(caustics.get());
