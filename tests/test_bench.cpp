@@ -11,6 +11,7 @@
 #include <osgWater/WaterNode>
 #include <nlohmann/json.hpp>
 #include <glm/geometric.hpp>
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
@@ -189,6 +190,44 @@ TEST(BenchMetric, WrongIndexOfRefractionReportsALargeError)
     const Quantiles q = quantiles(v.refractionPx);
     EXPECT_GT(q.median, 5.0);
     EXPECT_GT(q.over2, 0.5);
+}
+
+TEST(BenchMetric, ShadedPointsOnWavesTheReferenceDoesNotHaveReportALargeError)
+{
+    // the render's water has a 4 cm wave, the reference's none: the points the render shades lie
+    // a wave's height off the reference's crossings seen from 3 m up, tens of centimetres along the
+    // rays; with the same flat water both ways they agree
+    FlatScene sc;
+    REQUIRE_GL(sc.probe);
+    ViewErrors same = sc.measure(1.333);
+    ASSERT_GT(same.shadedPointCm.size(), 8000u);
+    EXPECT_LT(quantiles(same.shadedPointCm).max, 0.1) << "cm, flat water both ways";
+    osg::ref_ptr<osgWater::WaterSurface> flat = new osgWater::WaterSurface(*sc.surface);
+    sc.surface->setWaves({ testing_gl::makeWave(0.3f, 1.0f, 3.0f, 0.04f) });
+    const Estimate e = sc.probe.capture(*sc.water, 0.0);
+    const RayCaster scene(collectScene(*sc.water));
+    const WaterCaster flatWater(*flat, 0.0);
+    const Reference ref(scene, flatWater, *flat, 0.0, Media{});
+    ViewErrors waved = measureView(traceView(ref, sc.probe.camera()->getViewMatrix(),
+                                             sc.probe.camera()->getProjectionMatrix(), 160, 120), e, scene);
+    ASSERT_GT(waved.shadedPointCm.size(), 8000u);
+    EXPECT_GT(quantiles(waved.shadedPointCm).over2, 0.5) << "the share more than 2 cm off";
+}
+
+TEST(BenchMetric, RefractionErrorsOverTwoPixelsAreEachPutDownToOneCause)
+{
+    // the renderer refracts with n = 1.1 on flat water over an open bed: every pixel over 2 px is
+    // the search's point off the exact hit, in front of it or behind it; nothing hides the bed from
+    // the refraction pass, and every pixel shades the right point
+    FlatScene sc;
+    REQUIRE_GL(sc.probe);
+    sc.water->getSettings()->setWaterIOR(1.1f);
+    ViewErrors v = sc.measure(1.333);
+    const size_t over2 = size_t(std::count_if(v.refractionPx.begin(), v.refractionPx.end(), [](float p) { return p > 2.0f; }));
+    ASSERT_GT(over2, 4000u);
+    EXPECT_EQ(v.refractionCauses[CAUSE_SHADED_POINT], 0u);
+    EXPECT_EQ(v.refractionCauses[CAUSE_HIDDEN], 0u);
+    EXPECT_EQ(v.refractionCauses[CAUSE_IN_FRONT] + v.refractionCauses[CAUSE_BEHIND], over2);
 }
 
 TEST(BenchMetric, AReflectionLookupOffTheMirrorRaysHitReportsALargeError)
