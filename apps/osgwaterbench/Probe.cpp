@@ -1,6 +1,7 @@
 #include "Probe.h"
 #include "../common/FrameTimer.h"
 #include <osg/GL>
+#include <utility>
 
 namespace bench {
 
@@ -84,21 +85,16 @@ Estimate Probe::capture(osgWater::WaterNode& water, double t)
     _viewer->frame(t);
     _viewer->frame(t); // settle: passes sized and caustics chosen on the first frame
     e.color = read(_target.get());
-    water.setDebugOutput(osgWater::DEBUG_BOTTOM_HIT);
-    _viewer->frame(t);
-    e.bottom = read(_target.get());
-    water.setDebugOutput(osgWater::DEBUG_REFLECTION_LOOKUP);
-    _viewer->frame(t);
-    e.reflection = read(_target.get());
-    water.setDebugOutput(osgWater::DEBUG_FRESNEL);
-    _viewer->frame(t);
-    e.fresnel = read(_target.get());
-    water.setDebugOutput(osgWater::DEBUG_DRAWN_SURFACE);
-    _viewer->frame(t);
-    e.drawn = read(_target.get());
-    water.setDebugOutput(osgWater::DEBUG_SURFACE);
-    _viewer->frame(t);
-    e.shaded = read(_target.get());
+    // one frame per debug output, read back into its image
+    const std::pair<osgWater::DebugOutput, osg::ref_ptr<osg::Image> Estimate::*> outputs[] = {
+        { osgWater::DEBUG_BOTTOM_HIT, &Estimate::bottom },     { osgWater::DEBUG_REFLECTION_LOOKUP, &Estimate::reflection },
+        { osgWater::DEBUG_FRESNEL, &Estimate::fresnel },       { osgWater::DEBUG_DRAWN_SURFACE, &Estimate::drawn },
+        { osgWater::DEBUG_SURFACE, &Estimate::shaded } };
+    for (const auto& [output, image] : outputs) {
+        water.setDebugOutput(output);
+        _viewer->frame(t);
+        e.*image = read(_target.get());
+    }
     water.setDebugOutput(before);
     if (saved.valid()) {
         camera()->attach(osg::Camera::COLOR_BUFFER, saved.get());
