@@ -46,23 +46,36 @@ size_t countNonFinite(const osg::Image* img)
     return n;
 }
 
+namespace {
+
+glm::dvec3 refractionEye(const Estimate& e) { return glm::dvec3(e.refractionEye.x(), e.refractionEye.y(), e.refractionEye.z()); }
+
+// The refraction pass keeps one side of its clip plane: where the ray from its eye along dir
+// enters that side (0 when the eye is on it); false when it never does.
+bool entersPassSide(const Estimate& e, const glm::dvec3& dir, double& t0)
+{
+    const glm::dvec3 C = refractionEye(e);
+    const double plane = e.eyeBelow ? e.level - e.clearance : e.level + e.clearance;
+    t0 = 0.0;
+    if (e.eyeBelow ? C.z >= plane : C.z <= plane) return true;
+    if (std::fabs(dir.z) < 1e-12 || (e.eyeBelow ? dir.z < 0.0 : dir.z > 0.0)) return false;
+    t0 = (plane - C.z) / dir.z;
+    return true;
+}
+
+}
+
 bool shownPoint(const osg::Vec4f& est, const Estimate& e, const RayCaster& scene, glm::dvec3& out)
 {
-    const glm::dvec3 C(e.refractionEye.x(), e.refractionEye.y(), e.refractionEye.z());
+    const glm::dvec3 C = refractionEye(e);
     glm::dvec3 dir;
     if (est.w() > 1.5f && est.w() < 2.5f) dir = glm::dvec3(est.x(), est.y(), est.z()) - C;
     else if (est.w() > 2.5f && est.w() < 3.5f) dir = glm::dvec3(est.x(), est.y(), est.z());
     else return false;
     if (!(glm::length(dir) > 1e-9)) return false;
     dir = glm::normalize(dir);
-    // the pass keeps one side of its clip plane: start the ray where it enters that side
-    const double plane = e.eyeBelow ? e.level - e.clearance : e.level + e.clearance;
-    double t0 = 0.0;
-    const bool inside = e.eyeBelow ? C.z >= plane : C.z <= plane;
-    if (!inside) {
-        if (std::fabs(dir.z) < 1e-12 || (e.eyeBelow ? dir.z < 0.0 : dir.z > 0.0)) return false;
-        t0 = (plane - C.z) / dir.z;
-    }
+    double t0; // the ray starts where it enters the side the pass draws
+    if (!entersPassSide(e, dir, t0)) return false;
     const Hit h = scene.intersect(C, dir, t0);
     if (!h.hit) return false;
     out = h.point;
@@ -86,10 +99,13 @@ ViewErrors measureView(const ReferenceImage& ref, const Estimate& e, const RayCa
                 continue;
             }
             if (e.bottom.valid() && !covered) { ++v.coverageMismatch; continue; }
+            float shadedOffM = -1.0f; // the shaded point's distance from the exact crossing, where known
             if (e.shaded.valid()) { // both see water here
                 const osg::Vec4f u = px(e.shaded.get(), x, y);
-                if (u.w() > 1.5f && u.w() < 2.5f)
-                    v.shadedPointCm.push_back(100.0f * glm::length(glm::vec3(u.x(), u.y(), u.z()) - r.U));
+                if (u.w() > 1.5f && u.w() < 2.5f) {
+                    shadedOffM = glm::length(glm::vec3(u.x(), u.y(), u.z()) - r.U);
+                    v.shadedPointCm.push_back(100.0f * shadedOffM);
+                }
             }
             if (e.fresnel.valid()) {
                 const osg::Vec4f f = px(e.fresnel.get(), x, y);
@@ -127,26 +143,20 @@ ViewErrors measureView(const ReferenceImage& ref, const Estimate& e, const RayCa
                 const glm::dvec2 p(glm::dot(glm::dvec3(r.pixelsPerMetre[0]), d), glm::dot(glm::dvec3(r.pixelsPerMetre[1]), d));
                 const float errPx = float(glm::length(p));
                 v.refractionPx.push_back(errPx);
-                if (errPx > 2.0f) ++v.refractionCauses[int(refractionCause(e, scene, x, y, r, S))];
+                if (errPx > 2.0f) ++v.refractionCauses[int(refractionCause(e, scene, r, S, shadedOffM))];
             }
         }
     return v;
 }
 
-RefractionCause refractionCause(const Estimate& e, const RayCaster& scene, int x, int y, const PixelRef& r,
-                                const glm::dvec3& shown)
+RefractionCause refractionCause(const Estimate& e, const RayCaster& scene, const PixelRef& r, const glm::dvec3& shown,
+                                float shadedOffM)
 {
-    if (e.shaded.valid()) {
-        const osg::Vec4f u = px(e.shaded.get(), x, y);
-        if (glm::length(glm::dvec3(u.x(), u.y(), u.z()) - glm::dvec3(r.U)) > 0.02) return CAUSE_SHADED_POINT;
-    }
-    const glm::dvec3 C(e.refractionEye.x(), e.refractionEye.y(), e.refractionEye.z()), X(r.X);
-    // the pass draws one side of its clip plane: what lies on the other side hides nothing
-    const double plane = e.eyeBelow ? e.level - e.clearance : e.level + e.clearance;
-    const glm::dvec3 toX = X - C;
-    double t0 = 0.0;
-    if (e.eyeBelow ? C.z < plane : C.z > plane) t0 = std::fabs(toX.z) > 1e-12 ? (plane - C.z) / toX.z : 1.0;
-    if (t0 < 1.0 && scene.intersect(C, toX, std::max(t0, 0.0), 1.0 - 1e-6).hit) return CAUSE_HIDDEN;
+    if (shadedOffM > 0.02f) return CAUSE_SHADED_POINT;
+    const glm::dvec3 C = refractionEye(e), toX = glm::dvec3(r.X) - C;
+    // what lies on the other side of the pass's clip plane hides nothing
+    double t0;
+    if (entersPassSide(e, toX, t0) && t0 < 1.0 && scene.intersect(C, toX, t0, 1.0 - 1e-6).hit) return CAUSE_HIDDEN;
     // the shown point's distance from the pass's eye against the exact hit's
     return glm::length(shown - C) < glm::length(toX) ? CAUSE_IN_FRONT : CAUSE_BEHIND;
 }

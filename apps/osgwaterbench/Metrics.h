@@ -62,9 +62,10 @@ struct ViewErrors {
 bool shownPoint(const osg::Vec4f& estimate, const Estimate& e, const RayCaster& scene, glm::dvec3& out);
 
 ViewErrors measureView(const ReferenceImage& ref, const Estimate& e, const RayCaster& scene);
-//! The cause of one pixel's refraction error (`shown`: the point the pass shows there).
-RefractionCause refractionCause(const Estimate& e, const RayCaster& scene, int x, int y, const PixelRef& r,
-                                const glm::dvec3& shown);
+//! The cause of one pixel's refraction error (`shown`: the point the pass shows there;
+//! `shadedOffM`: how far the pixel's shaded point lies from the exact crossing, negative if unknown).
+RefractionCause refractionCause(const Estimate& e, const RayCaster& scene, const PixelRef& r, const glm::dvec3& shown,
+                                float shadedOffM);
 //! Per pixel of the render's water drawn by the built-in mesh: the rasterised point V against the
 //! analytic surface under it, (V.x, V.y, h(V.x, V.y)): the angle between them at the eye, in pixels
 //! (the focal length's: exact at the view's centre, up to 1 / cos^2 of the half field of view
