@@ -16,6 +16,12 @@ float waterHeight(vec2 p)
     return h;
 }
 
+// How many cells `cell` metres across span one wavelength of wave w (k dir.x, k dir.y, ...)
+float waterCellsPerWave(vec4 w, float cell)
+{
+    return 6.2831853 / (max(length(w.xy), 1e-9) * cell);
+}
+
 // The height a mesh whose cells are `cell` metres across draws: each wave smoothly faded out between
 // 4 and 2 cells per wavelength (WaterSurface::ringWaveFade): at 2 (Nyquist) the cells could only
 // alias it.
@@ -25,8 +31,7 @@ float waterHeightDrawn(vec2 p, float cell)
     for (int i = 0; i < 8; ++i) {
         if (i >= osgWater_WaveCount) break;
         vec4 w = osgWater_Waves[i];
-        float cellsPerWave = 6.2831853 / (max(length(w.xy), 1e-9) * cell);
-        h += smoothstep(2.0, 4.0, cellsPerWave) * w.z * sin(dot(w.xy, p) - osgWater_WavePhases[i]);
+        h += smoothstep(2.0, 4.0, waterCellsPerWave(w, cell)) * w.z * sin(dot(w.xy, p) - osgWater_WavePhases[i]);
     }
     return h;
 }
@@ -54,7 +59,7 @@ float waterDrawnErrorBound(float cell, bool faded)
     for (int i = 0; i < 8; ++i) {
         if (i >= osgWater_WaveCount) break;
         vec4 w = osgWater_Waves[i];
-        float cellsPerWave = 6.2831853 / (max(length(w.xy), 1e-9) * cell);
+        float cellsPerWave = waterCellsPerWave(w, cell);
         float keep = faded ? smoothstep(2.0, 4.0, cellsPerWave) : 1.0;
         e += abs(w.z) * (1.0 - keep * cos(3.1415927 * min(1.0 / cellsPerWave, 1.0)));
     }
