@@ -183,14 +183,16 @@ CausticsErrors measureCaustics(const PhotonImage& ref, const osg::Image* img, in
     const int n = ref.resolution / block;
     double sumSq = 0.0, sumRef = 0.0, sumGpu = 0.0, noise = 0.0;
     size_t count = 0;
-    const double perPhoton = double(ref.resolution) * ref.resolution / double(ref.photons);
+    const bool halves = ref.half[0].size() == ref.value.size() && ref.half[1].size() == ref.value.size();
     for (int by = 0; by < n; ++by)
         for (int bx = 0; bx < n; ++bx) {
-            double r = 0.0, g = 0.0;
+            double r = 0.0, g = 0.0, h[2] = { 0.0, 0.0 };
             for (int y = by * block; y < (by + 1) * block; ++y)
                 for (int x = bx * block; x < (bx + 1) * block; ++x) {
-                    r += ref.value[size_t(y) * ref.resolution + x];
+                    const size_t i = size_t(y) * ref.resolution + x;
+                    r += ref.value[i];
                     g += px(img, x, y).x();
+                    if (halves) h[0] += ref.half[0][i], h[1] += ref.half[1][i];
                 }
             r /= block * block;
             g /= block * block;
@@ -199,7 +201,9 @@ CausticsErrors measureCaustics(const PhotonImage& ref, const osg::Image* img, in
             sumSq += (g - r) * (g - r);
             sumRef += r;
             sumGpu += g;
-            noise += r * perPhoton / (block * block); // Poisson: variance of a block mean ~ value x photon weight / texels
+            // the mean of two independent halves A, B: its error's variance is that of (A - B) / 2
+            const double d = (h[0] - h[1]) / (2.0 * block * block);
+            noise += d * d;
             ++count;
         }
     if (!count || !(sumRef > 0.0)) return c;
@@ -207,7 +211,7 @@ CausticsErrors measureCaustics(const PhotonImage& ref, const osg::Image* img, in
     c.meanReference = sumRef / count;
     c.meanRendered = sumGpu / count;
     c.relativeRmse = std::sqrt(sumSq / count) / c.meanReference;
-    c.referenceNoise = std::sqrt(noise / count) / c.meanReference;
+    if (halves) c.referenceNoise = std::sqrt(noise / count) / c.meanReference;
     return c;
 }
 

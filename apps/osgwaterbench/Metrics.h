@@ -78,7 +78,7 @@ size_t countNonFinite(const osg::Image* img);
 struct CausticsErrors {
     bool valid = false;
     double relativeRmse = std::numeric_limits<double>::quiet_NaN();
-    double referenceNoise = relativeRmse; //!< expected relative RMSE of the reference alone (photon counting)
+    double referenceNoise = relativeRmse; //!< the reference's own relative RMSE, from its two halves (NaN without them)
     double meanReference = relativeRmse, meanRendered = relativeRmse;
 };
 //! Both images summed over blocks x blocks texels, RMSE over blocks that either lights, / mean reference.

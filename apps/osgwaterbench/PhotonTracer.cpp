@@ -42,20 +42,28 @@ PhotonImage tracePhotons(const RayCaster& scene, const WaterCaster& water, const
 {
     PhotonImage out;
     out.resolution = s.resolution;
-    const size_t side = std::max<size_t>(1, size_t(std::ceil(std::sqrt(double(s.photons)))));
-    out.photons = side * side;
+    // two independent sets of jittered strata over the whole window, side x side each: rows
+    // 0..side-1 are the first half's, side..2 side-1 the second's. (Interleaved rows of one set
+    // would not do: how many of a half's rows cross a texel varies from texel to texel, and their
+    // difference would count that as noise the whole set does not have.)
+    const size_t side = std::max<size_t>(1, size_t(std::ceil(std::sqrt(double(s.photons) / 2.0))));
+    const size_t rows = 2 * side;
+    out.photons = rows * side;
     out.value.assign(size_t(s.resolution) * s.resolution, 0.0f);
+    out.half[0] = out.half[1] = out.value;
     const osg::Matrixd sunToLocal = osg::Matrixd::inverse(localToSun);
     const glm::dvec3 L = glm::normalize(glm::dvec3(towardsSun.x(), towardsSun.y(), towardsSun.z()));
-    const double weight = double(s.resolution) * s.resolution / double(out.photons);
+    // each half's photons carry twice the full set's weight: either half alone estimates the image
+    const double halfWeight = 2.0 * double(s.resolution) * s.resolution / double(out.photons);
     std::mutex merge;
     std::atomic<size_t> rowsDone{ 0 };
     auto work = [&](size_t r0, size_t r1, unsigned seed) {
-        std::vector<double> acc(out.value.size(), 0.0);
+        std::vector<double> acc[2] = { std::vector<double>(out.value.size(), 0.0), std::vector<double>(out.value.size(), 0.0) };
         Rng rng{ seed * 0x12345ull + 7 };
         for (size_t r = r0; r < r1; ++r) {
+            const size_t h = r / side, row = r % side;
             for (size_t c = 0; c < side; ++c) {
-                const double u = (c + rng.next()) / side, v = (r + rng.next()) / side;
+                const double u = (c + rng.next()) / side, v = (row + rng.next()) / side;
                 const osg::Vec3d o = osg::Vec3d(u, v, 0.0) * sunToLocal; // on the sun camera's near plane
                 const glm::dvec3 org(o.x(), o.y(), o.z());
                 const Hit w = water.intersect(org, -L);
@@ -75,19 +83,21 @@ PhotonImage tracePhotons(const RayCaster& scene, const WaterCaster& water, const
                 const osg::Vec3d tex = osg::Vec3d(b.point.x, b.point.y, b.point.z) * localToSun;
                 const int i = int(std::floor(tex.x() * s.resolution)), j = int(std::floor(tex.y() * s.resolution));
                 if (i < 0 || j < 0 || i >= s.resolution || j >= s.resolution) continue;
-                acc[size_t(j) * s.resolution + i] += energy * weight;
+                acc[h][size_t(j) * s.resolution + i] += energy * halfWeight;
             }
             const size_t done = ++rowsDone;
-            if (s.progress && seed == 0 && (done % std::max<size_t>(1, side / 50) == 0)) progressBar(done, side, side);
+            if (s.progress && seed == 0 && (done % std::max<size_t>(1, rows / 50) == 0)) progressBar(done, rows, side);
         }
         std::lock_guard<std::mutex> lock(merge);
-        for (size_t i = 0; i < acc.size(); ++i) out.value[i] += float(acc[i]);
+        for (int h = 0; h < 2; ++h)
+            for (size_t i = 0; i < acc[h].size(); ++i) out.half[h][i] += float(acc[h][i]);
     };
     const unsigned threads = std::max(1u, std::min(8u, std::thread::hardware_concurrency()));
     std::vector<std::thread> pool;
-    for (unsigned i = 0; i < threads; ++i) pool.emplace_back(work, side * i / threads, side * (i + 1) / threads, i);
+    for (unsigned i = 0; i < threads; ++i) pool.emplace_back(work, rows * i / threads, rows * (i + 1) / threads, i);
     for (std::thread& th : pool) th.join();
-    if (s.progress) progressBar(side, side, side);
+    if (s.progress) progressBar(rows, rows, side);
+    for (size_t i = 0; i < out.value.size(); ++i) out.value[i] = 0.5f * (out.half[0][i] + out.half[1][i]);
     return out;
 }
 
