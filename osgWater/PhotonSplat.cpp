@@ -9,7 +9,7 @@ namespace {
 // one of its neighbours (which the tiled gather shifts in)
 bool acceptedPhoton(const float* p)
 {
-    return p[3] > 0.5f && p[2] > 0.0f && p[0] > -1.01f && p[0] < 2.01f && p[1] > -1.01f && p[1] < 2.01f;
+    return p[3] > 0.5f && p[2] >= 0.0f && p[0] > -1.01f && p[0] < 2.01f && p[1] > -1.01f && p[1] < 2.01f;
 }
 
 struct MeshVertex {

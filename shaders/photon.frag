@@ -5,6 +5,11 @@
 // (here in the sun's depth map, orthographic rays), and the photon is written as
 // (u, v, energy, 1): u, v its hit in the sun's texture space, energy = (1 - F) exp(-k d) (k: green) the
 // Fresnel-transmitted, attenuated share of the sun irradiance on this texel (thesis §9.2).
+// Over the built-in grid the photon starts where the sun's ray through this texel meets the
+// analytic waves, with their normal there (the grid's chords would move the waterline on a shore
+// by the waves' height over the shore's slope). A photon whose water the sun cannot reach (the
+// grid runs on under the dry shore: the sun's depth map shows the shore in front of it) is dark:
+// energy 0, not dropped.
 // OSGWATER_REFLECTED_PHOTONS (reflective caustics): the sun ray reflected instead, mirrored in the
 // water plane so it runs down through the mirrored scene above the water (the depth map's), with
 // the reflected share F and no water on its way.
@@ -22,6 +27,7 @@ uniform float osgWater_PhotonExtinction; // the green channel's sun extinction (
 uniform float osgWater_FresnelQ;
 uniform int osgWater_SearchSteps;
 uniform float osgWater_SearchTolerance;
+const float kSunReachesTolerance = 0.005; // metres: the depth map's precision over the sun's box
 #ifdef OSGWATER_REFLECTED_PHOTONS
 uniform mat4 osgWater_MirrorEye; // the mirror in the water plane, in this camera's eye space
 #endif
@@ -34,13 +40,46 @@ uniform mat4 osgWater_EyeToTile; // eye space -> tile units (x, y)
 in vec3 vLocal;
 in vec3 vMeshNormal;
 in vec3 vEye;
+in float vDrawnError;
+
+#if !defined(OSGWATER_TILED_PHOTONS) && !defined(OSGWATER_REFLECTED_PHOTONS)
+// Whether the sun's ray reaches the water at P (sun eye space) before the scene: the sun's depth
+// map read between its four texels around P: read at the nearest texel, the shore moves by up to
+// half a texel's rise, and a strip along the waterline is lit or dark by chance; between the
+// texels a plane is exact (the beach's caustics test: 4.7% from the photon reference read at the
+// nearest texel with a 1 cm tolerance, 4.0% read between). Next to a texel the map leaves clear (the shore cut off by the pass's
+// clip plane, high above this water) the nearest texel answers.
+bool owSunReaches(vec3 P)
+{
+    vec2 tc;
+    if (!owRefractionTexCoord(P, tc)) return true;
+    vec2 size = vec2(textureSize(osgWater_RefractionDepth, 0));
+    vec2 at = tc * size - 0.5, f = fract(at);
+    ivec2 i = ivec2(floor(at)), hi = ivec2(size) - 1;
+    vec4 d = vec4(texelFetch(osgWater_RefractionDepth, clamp(i, ivec2(0), hi), 0).r,
+                  texelFetch(osgWater_RefractionDepth, clamp(i + ivec2(1, 0), ivec2(0), hi), 0).r,
+                  texelFetch(osgWater_RefractionDepth, clamp(i + ivec2(0, 1), ivec2(0), hi), 0).r,
+                  texelFetch(osgWater_RefractionDepth, clamp(i + ivec2(1, 1), ivec2(0), hi), 0).r);
+    float depth = max(max(d.x, d.y), max(d.z, d.w)) >= 1.0 ? texture(osgWater_RefractionDepth, tc).r
+                                                            : mix(mix(d.x, d.y, f.x), mix(d.z, d.w, f.x), f.y);
+    if (depth >= 1.0) return true; // nothing under this water in the map
+    vec4 e = osgWater_RefractionInvProj * vec4(vec3(tc, depth) * 2.0 - 1.0, 1.0);
+    return !(e.z / e.w > P.z + kSunReachesTolerance);
+}
+#endif
 
 void main()
 {
 #ifdef OSGWATER_GRID
-    vec3 Nl = waterNormal(vLocal.xy);
+    // where the sun's ray through this texel meets the waves, not the grid's chord across them:
+    // the waterline on a shore moves with the waves' height
+    vec3 towardsSunLocal = normalize(transpose(gl_NormalMatrix) * vec3(0.0, 0.0, 1.0));
+    vec3 Nl;
+    vec3 U = waterOnSteepLine(vLocal, towardsSunLocal, vDrawnError, Nl);
+    vec3 surfaceEye = (gl_ModelViewMatrix * vec4(U, 1.0)).xyz;
 #else
     vec3 Nl = owSafeNormalize(vMeshNormal, vec3(0.0, 0.0, 1.0));
+    vec3 surfaceEye = vEye;
 #endif
 #ifdef OSGWATER_TILED_PHOTONS
     vec3 L = osgWater_TileSun;
@@ -50,10 +89,10 @@ void main()
     vec3 T = refract(-L, N, osgWater_IOR.x / osgWater_IOR.y);
     vec4 photon = vec4(0.0);             // alpha 0: no photon
     float towardsBed = dot(osgWater_TileBed.xyz, T);
-    float d = towardsBed < -1e-6 ? -(dot(osgWater_TileBed.xyz, vEye) + osgWater_TileBed.w) / towardsBed : -1.0;
+    float d = towardsBed < -1e-6 ? -(dot(osgWater_TileBed.xyz, surfaceEye) + osgWater_TileBed.w) / towardsBed : -1.0;
     if (cosL > 0.0 && dot(T, T) > 0.5 && d >= 0.0) {
         float F = owFresnel(cosL, osgWater_IOR.x, osgWater_IOR.y, osgWater_FresnelQ);
-        vec2 tc = (osgWater_EyeToTile * vec4(vEye + d * T, 1.0)).xy;
+        vec2 tc = (osgWater_EyeToTile * vec4(surfaceEye + d * T, 1.0)).xy;
         float share = cosL / max(N.z * L.z, 1e-4); // this texel's surface over its sun-facing area
         // no fade here: the bed under a tile lies at any depth, and the scene program fades the
         // light by the fragment's own (CausticsLighting::channelExtinction)
@@ -64,10 +103,10 @@ void main()
     vec3 N = owFaceNormal(owSafeNormalize(gl_NormalMatrix * Nl, L), L, 1e-3);
     float cosL = clamp(dot(N, L), 0.0, 1.0);
 #ifdef OSGWATER_REFLECTED_PHOTONS
-    vec3 start = (osgWater_MirrorEye * vec4(vEye, 1.0)).xyz;
+    vec3 start = (osgWater_MirrorEye * vec4(surfaceEye, 1.0)).xyz;
     vec3 T = mat3(osgWater_MirrorEye) * reflect(-L, N);
 #else
-    vec3 start = vEye;
+    vec3 start = surfaceEye;
     vec3 T = refract(-L, N, osgWater_IOR.x / osgWater_IOR.y);
 #endif
     vec4 photon = vec4(0.0);              // alpha 0: no photon
@@ -78,8 +117,10 @@ void main()
 #ifdef OSGWATER_REFLECTED_PHOTONS
         photon = vec4(tc, F, 1.0);
 #else
-        float d = length(hit.A - vEye);
-        photon = vec4(tc, (1.0 - F) * exp(-osgWater_PhotonExtinction * d), 1.0);
+        float d = length(hit.A - start);
+        // the sun's ray meets the scene before this piece of water (the water's mesh runs on under
+        // the shore): a dark photon, kept so that the mesh's triangles fade to the waterline
+        photon = vec4(tc, owSunReaches(start) ? (1.0 - F) * exp(-osgWater_PhotonExtinction * d) : 0.0, 1.0);
 #endif
     }
 #endif

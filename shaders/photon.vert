@@ -6,12 +6,19 @@
 out vec3 vLocal;
 out vec3 vMeshNormal;
 out vec3 vEye; // the sun camera's eye space
+out float vDrawnError; // how far the drawn grid can lie from the analytic surface here, metres
+#ifdef OSGWATER_GRID
+uniform float osgWater_GridCell; // the uniform grid's spacing, metres
+#endif
 
 void main()
 {
     vec4 v = gl_Vertex;
 #ifdef OSGWATER_GRID
     v.z = waterHeight(v.xy);
+    vDrawnError = waterDrawnErrorBound(osgWater_GridCell, false);
+#else
+    vDrawnError = 0.0;
 #endif
     vLocal = v.xyz;
     vMeshNormal = gl_Normal;

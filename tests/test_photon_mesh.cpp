@@ -124,6 +124,19 @@ TEST(PhotonMesh, ATriangleWithADroppedPhotonIsDropped)
     EXPECT_NEAR(whole - total(c), 2 * 3 * cellPower, 0.5 * cellPower);
 }
 
+TEST(PhotonMesh, DarkPhotonsKeepTheirTrianglesWhichFadeToThem)
+{
+    // photons of zero energy (the sun's ray meets the shore before the water there) from column 8
+    // on: the cells between column 7 and 8 fade from the lit side to the dark one and give half a
+    // cell each; dropping the dark photons instead would leave those cells unlit
+    const int n = 16, size = 64;
+    std::vector<float> p = photonsAt(n, [](double u, double v, double& x, double& y) { x = u; y = v; });
+    for (int j = 0; j < n; ++j)
+        for (int i = 8; i < n; ++i) p[4 * (std::size_t(j) * n + i) + 2] = 0.0f;
+    const double cellPower = double(size) * size / (double(n) * n);
+    EXPECT_NEAR(total(mesh(p, n, size)), (7 + 0.5) * (n - 1) * cellPower, 0.5 * cellPower);
+}
+
 TEST(PhotonMesh, SupersampledATexelAnEdgeCrossesGetsTheShareOfItsFourSamplesInside)
 {
     // every photon moved halfway to the centre (as above): the mesh's left edge at x = 32.5 + 0.1
