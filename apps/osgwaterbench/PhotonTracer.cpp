@@ -68,6 +68,7 @@ PhotonImage tracePhotons(const RayCaster& scene, const WaterCaster& water, const
                 const glm::dvec3 org(o.x(), o.y(), o.z());
                 const Hit w = water.intersect(org, -L);
                 if (!w.hit) continue;
+                if (scene.intersect(org, -L, 0.0, w.t).hit) continue; // the scene shades this water from the sun
                 glm::dvec3 N(0, 0, 1);
                 if (surface.usesGrid()) {
                     const osg::Vec3d n = surface.normal(w.point.x, w.point.y, t);

@@ -1,5 +1,6 @@
 // Caustics reference by forward photon tracing (thesis ch. 8, done exactly): photons leave the
-// sun's window uniformly (jittered strata), refract at the water surface by Snell with exact
+// sun's window uniformly (two independent sets of jittered strata), meet the water unless the scene
+// stands in their way first (a dry shore, a pier), refract at the water surface by Snell with exact
 // Fresnel transmission, lose exp(-k d) on the way to what they hit below, and land in the texel of
 // the caustics texture that the scene shader would read at that point. The result is in the
 // texture's units: irradiance per area seen from the sun, in units of the sun's irradiance.
