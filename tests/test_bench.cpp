@@ -41,6 +41,33 @@ osg::ref_ptr<osgWater::WaterSurface> flatSurface()
     return s;
 }
 
+// The sun towards (0.3, 0.4, 0.866) over flat water at z = 0, its window over 40 m x 40 m down to the
+// bed kDepth below, 64 x 64 texels: photons traced into it through `scene`.
+struct SunOverFlatWater {
+    osg::ref_ptr<osgWater::WaterSurface> surface = flatSurface();
+    osg::Vec3d sun = normalized(osg::Vec3d(0.3, 0.4, 0.866));
+    osg::Matrixd projection, localToSun;
+
+    SunOverFlatWater()
+    {
+        const osg::BoundingBox box(-20, -20, -kDepth, 20, 20, 0.0);
+        const osg::Matrixd view = osgWater::sunView(sun, box);
+        projection = osgWater::sunProjection(view, box);
+        localToSun = view * projection * osgWater::clipToTexture();
+    }
+    static osg::Vec3d normalized(osg::Vec3d v) { v.normalize(); return v; }
+    double transmitted() const { return 1.0 - fresnelExact(sun.z(), 1.0, 1.333); }
+
+    PhotonImage trace(const TriangleMesh& scene, size_t photons) const
+    {
+        PhotonSettings ps;
+        ps.photons = photons;
+        ps.resolution = 64;
+        ps.progress = false;
+        return tracePhotons(RayCaster(scene), WaterCaster(*surface, 0.0), *surface, 0.0, localToSun, sun, ps);
+    }
+};
+
 }
 
 TEST(BenchReference, FlatWaterAgreesWithSnellInClosedFormTo10Micrometres)
@@ -99,20 +126,9 @@ TEST(BenchPhotons, FlatWaterTransmitsOneMinusFresnelEverywhere)
 {
     // flat water over a flat bed: refraction shifts the sun's footprint without spreading it, so
     // every texel of the bed receives the transmitted share (1 - F) of the sun's irradiance
-    osg::ref_ptr<osgWater::WaterSurface> surface = flatSurface();
-    const RayCaster scene(flatQuad(-kDepth, 300.0));
-    const WaterCaster water(*surface, 0.0);
-    osg::Vec3d sun(0.3, 0.4, 0.866);
-    sun.normalize();
-    const osg::BoundingBox box(-20, -20, -kDepth, 20, 20, 0.0);
-    const osg::Matrixd view = osgWater::sunView(sun, box);
-    const osg::Matrixd localToSun = view * osgWater::sunProjection(view, box) * osgWater::clipToTexture();
-    PhotonSettings ps;
-    ps.photons = 400000;
-    ps.resolution = 64;
-    ps.progress = false;
-    const PhotonImage img = tracePhotons(scene, water, *surface, 0.0, localToSun, sun, ps);
-    const double expected = 1.0 - fresnelExact(sun.z(), 1.0, 1.333);
+    const SunOverFlatWater sc;
+    const PhotonImage img = sc.trace(flatQuad(-kDepth, 300.0), 400000);
+    const double expected = sc.transmitted();
     double sum = 0.0;
     int n = 0;
     for (int y = 16; y < 48; ++y)
@@ -128,33 +144,22 @@ TEST(BenchPhotons, WhatStandsAboveTheWaterShadesItFromTheSun)
 {
     // a 10 m square 1 m above flat water: the light it holds off the water, (1 - F) times its area
     // seen from the sun, is missing from the bed
-    osg::ref_ptr<osgWater::WaterSurface> surface = flatSurface();
-    osg::Vec3d sun(0.3, 0.4, 0.866);
-    sun.normalize();
-    const osg::BoundingBox box(-20, -20, -kDepth, 20, 20, 0.0);
-    const osg::Matrixd view = osgWater::sunView(sun, box);
-    const osg::Matrixd proj = osgWater::sunProjection(view, box);
-    const osg::Matrixd localToSun = view * proj * osgWater::clipToTexture();
-    PhotonSettings ps;
-    ps.photons = 400000;
-    ps.resolution = 64;
-    ps.progress = false;
-    const WaterCaster water(*surface, 0.0);
+    const SunOverFlatWater sc;
     auto energy = [&](bool shade) {
         TriangleMesh m = flatQuad(-kDepth, 300.0);
         if (shade) {
             m.add({ -5, -5, 1 }, { 5, -5, 1 }, { 5, 5, 1 });
             m.add({ -5, -5, 1 }, { 5, 5, 1 }, { -5, 5, 1 });
         }
-        const PhotonImage img = tracePhotons(RayCaster(m), water, *surface, 0.0, localToSun, sun, ps);
+        const PhotonImage img = sc.trace(m, 400000);
         double sum = 0.0;
         for (float v : img.value) sum += v;
         double l, r, b, t, n, f;
-        proj.getOrtho(l, r, b, t, n, f);
+        sc.projection.getOrtho(l, r, b, t, n, f);
         return sum * (r - l) * (t - b) / (64.0 * 64.0); // texel values are per area seen from the sun
     };
     const double lost = energy(false) - energy(true);
-    const double expected = (1.0 - fresnelExact(sun.z(), 1.0, 1.333)) * 100.0 * sun.z();
+    const double expected = sc.transmitted() * 100.0 * sc.sun.z();
     // tolerance: 1% (measured: 0.01%)
     EXPECT_NEAR(lost, expected, 0.01 * expected);
 }
@@ -163,20 +168,9 @@ TEST(BenchPhotons, TheNoiseTheTwoHalvesMeasureIsTheReferencesOwnError)
 {
     // flat water over a flat bed, few photons (about 6 per texel): every texel's exact value is
     // 1 - F, so the reference's own error is known; the halves' estimate must find it
-    osg::ref_ptr<osgWater::WaterSurface> surface = flatSurface();
-    const RayCaster scene(flatQuad(-kDepth, 300.0));
-    const WaterCaster water(*surface, 0.0);
-    osg::Vec3d sun(0.3, 0.4, 0.866);
-    sun.normalize();
-    const osg::BoundingBox box(-20, -20, -kDepth, 20, 20, 0.0);
-    const osg::Matrixd view = osgWater::sunView(sun, box);
-    const osg::Matrixd localToSun = view * osgWater::sunProjection(view, box) * osgWater::clipToTexture();
-    PhotonSettings ps;
-    ps.photons = 25000;
-    ps.resolution = 64;
-    ps.progress = false;
-    const PhotonImage img = tracePhotons(scene, water, *surface, 0.0, localToSun, sun, ps);
-    const double exact = 1.0 - fresnelExact(sun.z(), 1.0, 1.333);
+    const SunOverFlatWater sc;
+    const PhotonImage img = sc.trace(flatQuad(-kDepth, 300.0), 25000);
+    const double exact = sc.transmitted();
     double actual = 0.0, estimated = 0.0;
     int n = 0;
     for (int y = 8; y < 56; ++y)
