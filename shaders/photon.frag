@@ -44,11 +44,11 @@ in float vDrawnError;
 
 #if !defined(OSGWATER_TILED_PHOTONS) && !defined(OSGWATER_REFLECTED_PHOTONS)
 // Whether the sun's ray reaches the water at P (sun eye space) before the scene: the sun's depth
-// map read between its four texels around P: read at the nearest texel, the shore moves by up to
+// map read between its four texels around P. Read at the nearest texel, the shore moves by up to
 // half a texel's rise, and a strip along the waterline is lit or dark by chance; between the
 // texels a plane is exact (the beach's caustics test: 4.7% from the photon reference read at the
-// nearest texel with a 1 cm tolerance, 4.0% read between). Next to a texel the map leaves clear (the shore cut off by the pass's
-// clip plane, high above this water) the nearest texel answers.
+// nearest texel with a 1 cm tolerance, 4.0% read between). Next to a texel the map leaves clear
+// (the shore cut off by the pass's clip plane, high above this water) the nearest texel answers.
 bool owSunReaches(vec3 P)
 {
     vec2 tc;

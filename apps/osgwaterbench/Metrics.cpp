@@ -192,7 +192,10 @@ CausticsErrors measureCaustics(const PhotonImage& ref, const osg::Image* img, in
                     const size_t i = size_t(y) * ref.resolution + x;
                     r += ref.value[i];
                     g += px(img, x, y).x();
-                    if (halves) h[0] += ref.half[0][i], h[1] += ref.half[1][i];
+                    if (halves) {
+                        h[0] += ref.half[0][i];
+                        h[1] += ref.half[1][i];
+                    }
                 }
             r /= block * block;
             g /= block * block;

@@ -26,8 +26,8 @@ struct PhotonImage {
     int resolution = 0;
     size_t photons = 0;           //!< photons traced
     std::vector<float> value;     //!< resolution^2, row 0 at v = 0
-    //! The same estimate from each half of the photons alone (the strata's even rows, the odd
-    //! rows; independent draws): value is their mean, and their difference measures its noise.
+    //! The same estimate from each half of the photons alone (two independent sets of strata over
+    //! the whole window): value is their mean, and their difference measures its noise.
     std::vector<float> half[2];
 };
 
