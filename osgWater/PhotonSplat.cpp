@@ -76,7 +76,7 @@ void osgWater::splatPhotons(const float* photons, std::size_t count, float weigh
 {
     for (std::size_t i = 0; i < count; ++i) {
         const float* p = photons + 4 * i;
-        if (!acceptedPhoton(p)) continue;
+        if (!acceptedPhoton(p) || !(p[2] > 0.0f)) continue; // a dark photon adds nothing
         const float e = p[2] * weight * shift.weight;
         if (!std::isfinite(e)) continue;
         // texel centres sit at integer + 0.5: the four around (x, y) start at floor(x - 0.5)

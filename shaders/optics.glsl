@@ -103,6 +103,13 @@ bool owPassTexCoord(mat4 proj, vec3 P, out vec2 tc)
     return true;
 }
 
+// The eye-space z of what a pass's depth target holds at texture coordinate tc (depth d)
+float owPassEyeZ(owDepthPass pass, vec2 tc, float d)
+{
+    vec4 e = pass.invProj * vec4(vec3(tc, d) * 2.0 - 1.0, 1.0);
+    return e.z / e.w;
+}
+
 // A: the first surface on the pass camera's ray through P; false for sky (the cleared depth), a
 // surface under the pass's floor plane, or a point off the texture where the pass says so. Camera
 // rays meet at the eye (A = P Z / P.z), or are parallel to -Z when the includer defines
@@ -117,8 +124,7 @@ bool owSurfaceAlongRay(sampler2D depthTex, owDepthPass pass, vec3 P, out vec3 A)
     float d = texture(depthTex, tc).r;
     // only the cleared depth is sky: a sky dome drawn just inside the far plane is a surface
     if (d >= 1.0) return false;
-    vec4 e = pass.invProj * vec4(vec3(tc, d) * 2.0 - 1.0, 1.0);
-    float Z = e.z / e.w;
+    float Z = owPassEyeZ(pass, tc, d);
 #ifdef OSGWATER_ORTHO_DEPTH
     A = vec3(P.xy, Z);
 #else

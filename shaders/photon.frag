@@ -63,8 +63,7 @@ bool owSunReaches(vec3 P)
     float depth = max(max(d.x, d.y), max(d.z, d.w)) >= 1.0 ? texture(osgWater_RefractionDepth, tc).r
                                                             : mix(mix(d.x, d.y, f.x), mix(d.z, d.w, f.x), f.y);
     if (depth >= 1.0) return true; // nothing under this water in the map
-    vec4 e = osgWater_RefractionInvProj * vec4(vec3(tc, depth) * 2.0 - 1.0, 1.0);
-    return !(e.z / e.w > P.z + kSunReachesTolerance);
+    return !(owPassEyeZ(owRefractionPass(), tc, depth) > P.z + kSunReachesTolerance);
 }
 #endif
 

@@ -48,6 +48,7 @@ void main()
 #else
     vec2 at = p.xy + osgWater_GatherShift.xy / osgWater_CausticsSize;
     vPhoton = vec3(at * osgWater_CausticsSize, p.z * osgWater_PhotonWeight * osgWater_GatherShift.z);
-    gl_Position = ok ? vec4(at * 2.0 - 1.0, 0.0, 1.0) : vec4(2.0, 2.0, 2.0, 1.0);
+    // a dark photon adds nothing to a splat: it is not drawn
+    gl_Position = ok && p.z > 0.0 ? vec4(at * 2.0 - 1.0, 0.0, 1.0) : vec4(2.0, 2.0, 2.0, 1.0);
 #endif
 }
