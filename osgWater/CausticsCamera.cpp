@@ -56,12 +56,16 @@ CausticsCamera::CausticsCamera(osg::Group* scene, osg::StateSet* sceneState, osg
     // the mirror flips winding: keep front faces front
     if (reflected) getOrCreateStateSet()->setAttribute(new osg::FrontFace(osg::FrontFace::CLOCKWISE));
     // depth only: no colour target, no shading
-    setClearMask(GL_DEPTH_BUFFER_BIT);
-    setDrawBuffer(GL_NONE);
-    setReadBuffer(GL_NONE);
-    _depth = makeTargetTexture(gridSize, GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT, GL_FLOAT, false);
+    setDepthOnly();
     _depth->setName("osgWater.sunDepth");
-    attach(osg::Camera::DEPTH_BUFFER, _depth.get());
+    if (!reflected) {
+        // what stands above the water shades it: the whole scene seen from the sun, unclipped
+        // (the clipped map holds only the underwater scene the photons' search needs)
+        _shade = new PassCamera(scene, { sceneState, depthOnlyState() }, gridSize, gridSize, PASS_SUN_DEPTH);
+        _shade->setName("osgWater.SunShadeCamera");
+        _shade->setDepthOnly();
+        _shade->getDepthTexture()->setName("osgWater.sunShade");
+    }
 
     _photons = new PhotonCamera(waterState, gridSize, floatTargets);
     _gather = new PhotonGather(_photons->getPhotonTexture(), gridSize, resolution, floatTargets);
@@ -73,7 +77,8 @@ CausticsCamera::CausticsCamera(osg::Group* scene, osg::StateSet* sceneState, osg
     _timer->attach(_photons.get(), _gather.get());
     _depthTimer = new GpuTimer;
     _depthTimer->setEnabled(false);
-    _depthTimer->attach(this);
+    if (_shade.valid()) _depthTimer->attach(this, _shade.get()); // drawn in this order (cullPass())
+    else _depthTimer->attach(this);
 }
 
 osg::StateSet* CausticsCamera::depthOnlyState()
@@ -84,13 +89,16 @@ osg::StateSet* CausticsCamera::depthOnlyState()
     return ss;
 }
 
-osg::Camera* CausticsCamera::getPassCamera(PassId pass)
+void CausticsCamera::cullPass(PassId pass, osg::NodeVisitor& cv)
 {
     switch (pass) {
-    case PASS_SUN_DEPTH: return this;
-    case PASS_PHOTONS: return _photons.get();
-    case PASS_GATHER: return _gather.get();
-    default: return nullptr;
+    case PASS_SUN_DEPTH:
+        accept(cv);
+        if (_shade.valid() && !_tiled) _shade->accept(cv);
+        break;
+    case PASS_PHOTONS: _photons->accept(cv); break;
+    case PASS_GATHER: _gather->accept(cv); break;
+    default: break;
     }
 }
 
@@ -169,9 +177,12 @@ void CausticsCamera::update(const Frame& f)
     const osg::Matrixd view = _reflected ? mirror * sun : sun;
     // the underwater part only, or what stands above the water
     setKeepPlane(_reflected ? osg::Plane(0.0, 0.0, 1.0, -f.level) : osg::Plane(0.0, 0.0, -1.0, f.level + f.clearance));
-    if (view != _depthView || proj != _depthProj) {
+    // the shade map: the same window, its near plane raised to the scene's top
+    const osg::Matrixd shadeProj = _shade.valid() ? shadeProjection(sun, proj, box, f.scene) : osg::Matrixd();
+    if (view != _depthView || proj != _depthProj || shadeProj != _shadeProj) {
         _depthView = view;
         _depthProj = proj;
+        _shadeProj = shadeProj;
         ++_depthVersion;
     }
     setViewMatrix(view);
@@ -180,6 +191,14 @@ void CausticsCamera::update(const Frame& f)
     depthPass.towardsSun = f.towardsSun;
     depthPass.level = f.level;
     applyLighting(depthPass);
+    if (_shade.valid()) {
+        _shade->setViewMatrix(sun);
+        _shade->setProjectionMatrix(shadeProj);
+        // all of it down to the scene's floor: the bed under open water is in the map too, so the
+        // shade test reads between texels right up to the waterline (no cleared texel beside it)
+        _shade->setKeepPlane(osg::Plane(0.0, 0.0, 1.0, -(std::min(f.scene.zMin(), box.zMin()) - 1.0)));
+        _shade->applyLighting(depthPass);
+    }
     _tiled = !_reflected && f.tile > 0.0;
     _tileSide = _tiled ? f.tile : 0.0;
     if (_tiled) {
@@ -197,6 +216,7 @@ void CausticsCamera::update(const Frame& f)
         _photons->setTile(f.surface, tileView, tileProj, f.towardsSun, f.tileBedZ, _lighting.localToTile);
     } else {
         _photons->setSun(f.surface, sun, proj, _depth.get(), _reflected ? &mirror : nullptr);
+        if (_shade.valid()) _photons->setSunShade(_shade->getDepthTexture(), shadeProj);
     }
     _lighting.tiled = _tiled;
 
@@ -225,6 +245,20 @@ void CausticsCamera::update(const Frame& f)
     }
 }
 
+osg::Matrixd CausticsCamera::shadeProjection(const osg::Matrixd& sun, const osg::Matrixd& proj,
+                                             const osg::BoundingBox& box, const osg::BoundingBox& scene)
+{
+    // what can shade the box's water lies on the sun's rays through it: the same window, from
+    // the scene's top (the near plane may lie behind the sun camera's eye: orthographic) down
+    // to the box's floor
+    osg::BoundingBox tall = box;
+    if (scene.valid()) tall.zMax() = std::max(tall.zMax(), scene.zMax());
+    double l, r, b, t, n, fa, tl, tr, tb, tt, tn, tf;
+    proj.getOrtho(l, r, b, t, n, fa);
+    sunProjection(sun, tall).getOrtho(tl, tr, tb, tt, tn, tf);
+    return osg::Matrixd::ortho(l, r, b, t, std::min(n, tn), fa);
+}
+
 double CausticsCamera::getTexelSize() const
 {
     const double side = _tiled ? _tileSide : std::max(_window.x(), _window.y());
@@ -236,7 +270,8 @@ bool CausticsCamera::depthStale(unsigned int context) const
     // also when the map's GL texture was released (a view removed from the context releases the
     // passes it culled last): a released texture holds nothing, so a map drawn once is drawn again
     auto done = _depthDone.find(context);
-    return done == _depthDone.end() || done->second != _depthVersion || !_depth->getTextureObject(context);
+    return done == _depthDone.end() || done->second != _depthVersion || !_depth->getTextureObject(context) ||
+           (_shade.valid() && !_tiled && !_shade->getDepthTexture()->getTextureObject(context));
 }
 
 void CausticsCamera::markDepthDrawn(unsigned int context)
@@ -323,6 +358,7 @@ WaterSettings::CausticsGather CausticsCamera::autoGather(const CausticsSupport& 
 void CausticsCamera::resizeGLObjectBuffers(unsigned int maxSize)
 {
     PassCamera::resizeGLObjectBuffers(maxSize);
+    if (_shade.valid()) _shade->resizeGLObjectBuffers(maxSize);
     resizePassGLObjectBuffers(_photons.get(), maxSize);
     _gather->resizeGLObjectBuffers(maxSize);
     resizePassGLObjectBuffers(_gather.get(), maxSize);
@@ -331,6 +367,7 @@ void CausticsCamera::resizeGLObjectBuffers(unsigned int maxSize)
 void CausticsCamera::releaseGLObjects(osg::State* state) const
 {
     PassCamera::releaseGLObjects(state);
+    if (_shade.valid()) _shade->releaseGLObjects(state);
     releasePassGLObjects(_photons.get(), state);
     _gather->releaseGLObjects(state); // its point clouds and CPU gather are its children
     releasePassGLObjects(_gather.get(), state);

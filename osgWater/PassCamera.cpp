@@ -36,6 +36,14 @@ void PassCamera::attachDepthTexture()
     attach(osg::Camera::DEPTH_BUFFER, _depth.get());
 }
 
+void PassCamera::setDepthOnly()
+{
+    setClearMask(GL_DEPTH_BUFFER_BIT);
+    setDrawBuffer(GL_NONE);
+    setReadBuffer(GL_NONE);
+    attachDepthTexture();
+}
+
 osg::Texture2D* osgWater::makeTargetTexture(int size, GLenum internalFormat, GLenum format, GLenum type, bool linear)
 {
     return makeTargetTexture(size, size, internalFormat, format, type, linear);

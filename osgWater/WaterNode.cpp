@@ -414,8 +414,8 @@ void WaterNode::cullPass(PassId pass, osgUtil::CullVisitor& cv, const ViewFrame&
     case PASS_SUN_DEPTH:
     case PASS_PHOTONS:
     case PASS_GATHER:
-        _caustics->getPassCamera(pass)->accept(cv);
-        if (v.facts.reflectedCaustics) _reflectedCaustics->getPassCamera(pass)->accept(cv);
+        _caustics->cullPass(pass, cv);
+        if (v.facts.reflectedCaustics) _reflectedCaustics->cullPass(pass, cv);
         break;
     case PASS_REFLECTION: p->getReflectionCamera()->accept(cv); break;
     case PASS_REFRACTION: p->getRefractionCamera()->accept(cv); break;

@@ -436,6 +436,7 @@ TEST_P(RenderCausticsMethod, NoNaNOrInfAtAnySunElevation)
             EXPECT_TRUE(allFinite(sc.h.readTexture(c->getCausticsTexture()).get())) << elevation;
             EXPECT_TRUE(allFinite(sc.h.readTexture(c->getPhotonTexture()).get())) << elevation;
             EXPECT_TRUE(allFinite(sc.h.readTexture(c->getDepthTexture()).get())) << elevation;
+            EXPECT_TRUE(allFinite(sc.h.readTexture(c->getShadeTexture()).get())) << elevation;
         }
         EXPECT_TRUE(allFinite(sc.h.readColor().get())) << elevation;
     }
