@@ -280,6 +280,9 @@ bool writeDocs(const std::string& dir, const RunInfo& info, const std::vector<Re
         md << "| default coverage mismatch ≤ 0.5% on every view (worst: " << def->worstCoverageView << ") | "
            << pct(def->worstCoverageShare) << " | " << status(def->worstCoverageShare, def->worstCoverageShare <= 0.005)
            << " |\n";
+        md << "| default caustics RMSE ≤ 10% on every view (worst: " << def->worstCausticsView << ", the reference's noise "
+           << pct(def->worstCausticsNoise) << ") | " << pct(def->worstCausticsRmse) << " | "
+           << status(def->worstCausticsRmse, def->worstCausticsRmse <= 0.10) << " |\n";
     }
 
     // the presets: speed from the ablation, errors from the techniques

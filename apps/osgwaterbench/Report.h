@@ -37,6 +37,8 @@ struct Summary {
     double reflectionNotShownShare = std::numeric_limits<double>::quiet_NaN(); //!< of the reflection's measured pixels
     double coverageMismatchShare = std::numeric_limits<double>::quiet_NaN();   //!< of the reference's water pixels
     double causticsRmse = std::numeric_limits<double>::quiet_NaN(), causticsNoise = causticsRmse;
+    double worstCausticsRmse = causticsRmse, worstCausticsNoise = causticsRmse; //!< the worst view's, and its reference's noise
+    std::string worstCausticsView;
     size_t nanPixels = 0;
 };
 

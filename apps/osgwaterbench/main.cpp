@@ -89,6 +89,11 @@ Summary summarize(const std::string& name, const std::vector<Record>& records, s
         if (r.causticsErrors.valid) {
             caustics.push_back(r.causticsErrors.relativeRmse);
             noise.push_back(r.causticsErrors.referenceNoise);
+            if (!(r.causticsErrors.relativeRmse <= s.worstCausticsRmse)) {
+                s.worstCausticsRmse = r.causticsErrors.relativeRmse;
+                s.worstCausticsNoise = r.causticsErrors.referenceNoise;
+                s.worstCausticsView = r.view;
+            }
         }
         s.nanPixels += r.nanPixels;
         px.insert(px.end(), errors[i].refractionPx.begin(), errors[i].refractionPx.end());
