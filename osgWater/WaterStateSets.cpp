@@ -124,8 +124,7 @@ void WaterStateSets::applySettings(const WaterSettings& s, const WaterSurface& s
     w->getUniform("osgWater_GridCell")->set(surface.getSize() / float(std::max(surface.getResolution(), 2u) - 1));
     setDefineIf(w, "OSGWATER_GRID", surface.usesGrid());
     setDefineIf(w, "OSGWATER_RINGS", surface.usesGrid() && surface.getMeshLayout() == WaterSurface::MESH_EYE_RINGS);
-    setDefineIf(w, "OSGWATER_ONE_STEP", s.getRefractionLookup() == WaterSettings::ONE_STEP);
-    setDefineIf(w, "OSGWATER_REFRACTION_PLANE", s.getRefractionLookup() == WaterSettings::PLANE_OFFSET);
+    w->setDefine("OSGWATER_REFRACTION", std::to_string(int(s.getRefractionLookup()))); // the enum's numbers
     w->setDefine("OSGWATER_REFLECTION", std::to_string(int(s.getReflectionLookup()))); // the enum's numbers
     w->setDefine("OSGWATER_FRESNEL", std::to_string(int(s.getFresnelModel()))); // the enum's numbers
     w->setDefine("OSGWATER_UNDERWATER", s.getUnderwaterModel() == WaterSettings::UNDERWATER_THESIS ? "1" : "0");

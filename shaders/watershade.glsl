@@ -3,7 +3,7 @@
 // in the reflection pass's (or the thesis's lookup W = U + c R), depth attenuation, Fresnel, final
 // mix (eq. 9). Shared by the surface (water.frag) and the near-plane cap (cap.frag), which shades the
 // surface where the near plane cut it away. The includer lists OSGWATER_EYE_BELOW,
-// OSGWATER_ONE_STEP, OSGWATER_REFRACTION_PLANE, OSGWATER_REFLECTION, OSGWATER_FRESNEL,
+// OSGWATER_REFRACTION, OSGWATER_REFLECTION, OSGWATER_FRESNEL,
 // OSGWATER_UNDERWATER, OSGWATER_NO_REFLECTION, OSGWATER_NO_REFRACTION, OSGWATER_SEARCH_STEPS,
 // OSGWATER_ENVIRONMENT, OSGWATER_DEBUG in its import_defines. OSGWATER_ENVIRONMENT: the
 // surroundings above the water in a cube map (local frame), read along rays the pass textures do
@@ -74,21 +74,36 @@ vec4 owPlanePoint(vec3 U, vec3 D, float planeZ)
     return t > 0.0 && t < 1e6 ? vec4(U + t * D, 1.0) : vec4(D, 0.0);
 }
 
+// The refracted ray's hit in the refraction pass (its eye space, R1 unit): the thesis's iterative
+// search, or the reflection's bracketed one (OSGWATER_REFRACTION 3, WaterSettings::BRACKETED),
+// which finds the hit beyond a depth edge where the thesis's secants through two bottom points
+// point anywhere. A bracketed ray that meets nothing the pass drew is none (seen from below: the
+// sky along its direction).
+owBottomHit owRefractionSearch(vec3 u1, vec3 R1)
+{
+#if defined(OSGWATER_REFRACTION) && OSGWATER_REFRACTION == 3
+    return owMirrorSearch(osgWater_RefractionDepth, owRefractionPass(), u1, R1, osgWater_SearchSteps,
+                          osgWater_SearchTolerance);
+#else
+    return owIterativeSearch(u1, R1, osgWater_SearchSteps, osgWater_SearchTolerance);
+#endif
+}
+
 // The refracted colour seen from above: bottom search along R (eq. 4-5), or the plane offset.
 vec3 owRefractedFromAbove(vec3 U, vec3 R, out vec4 debugHit)
 {
     debugHit = vec4(0.0, 0.0, 0.0, -1.0);
     vec3 u1 = (osgWater_RefractionView * vec4(U, 1.0)).xyz;
     vec3 R1 = normalize(mat3(osgWater_RefractionView) * R); // unit in that eye space, scaled or not
-#if defined(OSGWATER_REFRACTION_PLANE)
+#if defined(OSGWATER_REFRACTION) && OSGWATER_REFRACTION == 2
     // the refracted ray's hit on the plane below the level (a wave's trough under the plane: U)
     vec4 P = owPlanePoint(U, R, osgWater_Level - osgWater_LookupPlanes.y);
     vec3 p1 = (osgWater_RefractionView * vec4(P.w > 0.5 ? P.xyz : U, 1.0)).xyz;
     owBottomHit hit = owBottomHit(true, p1, p1, 0.0);
-#elif defined(OSGWATER_ONE_STEP)
+#elif defined(OSGWATER_REFRACTION) && OSGWATER_REFRACTION == 0
     owBottomHit hit = owOneStepSearch(u1, R1, osgWater_OneStep.x, osgWater_OneStep.y);
 #else
-    owBottomHit hit = owIterativeSearch(u1, R1, osgWater_SearchSteps, osgWater_SearchTolerance);
+    owBottomHit hit = owRefractionSearch(u1, R1);
 #endif
     float d = -1.0;
     vec3 col = osgWater_WaterColor;
@@ -114,8 +129,7 @@ vec3 owRefractedFromBelow(vec3 U, vec3 R, out vec4 debugHit)
 #else
     // the same search as from above, in the air; nothing found along R: the sky in R's direction
     vec3 u1 = (osgWater_RefractionView * vec4(U, 1.0)).xyz;
-    owBottomHit hit = owIterativeSearch(u1, normalize(mat3(osgWater_RefractionView) * R), osgWater_SearchSteps,
-                                        osgWater_SearchTolerance);
+    owBottomHit hit = owRefractionSearch(u1, normalize(mat3(osgWater_RefractionView) * R));
     vec3 col;
     vec2 tc;
     if (hit.valid && owRefractionTexCoord(hit.W, tc)) {

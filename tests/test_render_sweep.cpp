@@ -68,6 +68,7 @@ void buildScene(WaterNode* water, int kind)
 // Expensive ones (new targets, recompiled programs) change per group of configurations...
 struct Group {
     int scene, steps; // steps 0: one-step lookup (or the plane offset, with planeLookups)
+    bool bracketed;    // with steps: the bracketed search (else the thesis's iterative one)
     bool planeLookups; // the plane-offset refraction (when steps is 0) and reflection lookups
     bool offsetReflection; // without planeLookups: the thesis's offset reflection lookup, else the search
     WaterSettings::FresnelModel fresnel;
@@ -113,6 +114,7 @@ std::vector<Group> groups()
         x.scene = int(i % NUM_SCENES);
         x.steps = int((i * 7) % 9);
         x.planeLookups = i % 3 == 1;
+        x.bracketed = i % 4 == 3;
         x.offsetReflection = i % 2 == 0;
         x.fresnel = pick(fresnel, i / 5);
         x.underwater = pick(under, i / 3);
@@ -171,7 +173,8 @@ std::string describe(const Group& g, const Config& c)
 {
     std::ostringstream s;
     s << sceneName(g.scene) << ", "
-      << (g.steps ? "iterative " + std::to_string(g.steps) : std::string(g.planeLookups ? "plane" : "one-step"))
+      << (g.steps ? (g.bracketed ? "bracketed " : "iterative ") + std::to_string(g.steps)
+                  : std::string(g.planeLookups ? "plane" : "one-step"))
       << (g.planeLookups ? ", plane reflection" : g.offsetReflection ? ", offset reflection" : ", reflection search")
       << ", fresnel " << g.fresnel << ", underwater " << g.underwater << ", gather " << g.gather << (g.areaMesh ? " (mesh)" : "") << (g.reflective ? " (reflective)" : "") << (g.tile > 0.0f ? " (tiled)" : "") << (g.environment ? ", environment map" : "") << ", textures "
       << g.textureSize << ", photons " << g.photonGrid << ", viewport " << g.viewport << ", rotation " << g.rotation
@@ -184,7 +187,7 @@ std::string describe(const Group& g, const Config& c)
 void apply(WaterNode* water, const Group& g)
 {
     WaterSettings* s = water->getSettings();
-    s->setRefractionLookup(g.steps ? WaterSettings::ITERATIVE
+    s->setRefractionLookup(g.steps ? (g.bracketed ? WaterSettings::BRACKETED : WaterSettings::ITERATIVE)
                            : g.planeLookups ? WaterSettings::PLANE_OFFSET : WaterSettings::ONE_STEP);
     s->setReflectionLookup(g.planeLookups ? WaterSettings::REFLECTION_PLANE
                            : g.offsetReflection ? WaterSettings::REFLECTION_OFFSET : WaterSettings::REFLECTION_SEARCH);

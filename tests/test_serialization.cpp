@@ -43,7 +43,7 @@ osg::ref_ptr<WaterNode> pond()
     s->setAttenuation(0.25f);
     s->setFresnelModel(WaterSettings::FRESNEL_EXACT);
     s->setFresnelReciprocalPower(7.5f);
-    s->setRefractionLookup(WaterSettings::ONE_STEP);
+    s->setRefractionLookup(WaterSettings::BRACKETED);
     s->setSearchSteps(5);
     s->setFovExtensionNear(1.4f);
     s->setReflectionTextureSize(256);
@@ -102,7 +102,7 @@ TEST(Serialization, ExpectedTextReadsBackIntoTheSameNode)
     EXPECT_EQ(s->getFresnelModel(), WaterSettings::FRESNEL_EXACT);
     EXPECT_FLOAT_EQ(s->getFresnelReciprocalPower(), 7.5f);
     EXPECT_FLOAT_EQ(s->getFresnelExponent(), 5.0f); // absent: default
-    EXPECT_EQ(s->getRefractionLookup(), WaterSettings::ONE_STEP);
+    EXPECT_EQ(s->getRefractionLookup(), WaterSettings::BRACKETED);
     EXPECT_EQ(s->getSearchSteps(), 5);
     EXPECT_FLOAT_EQ(s->getFovExtensionNear(), 1.4f);
     EXPECT_EQ(s->getReflectionTextureSize(), 256);

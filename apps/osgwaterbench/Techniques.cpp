@@ -16,6 +16,7 @@ std::vector<Technique> allTechniques()
                          s.setRefractionLookup(WaterSettings::ITERATIVE);
                          s.setSearchSteps(steps);
                      } });
+    t.push_back({ "refraction-bracketed", [](WaterSettings& s) { s.setRefractionLookup(WaterSettings::BRACKETED); } });
     t.push_back({ "refraction-plane", [](WaterSettings& s) { s.setRefractionLookup(WaterSettings::PLANE_OFFSET); } });
     t.push_back({ "reflection-offset", [](WaterSettings& s) { s.setReflectionLookup(WaterSettings::REFLECTION_OFFSET); } });
     t.push_back({ "reflection-plane", [](WaterSettings& s) { s.setReflectionLookup(WaterSettings::REFLECTION_PLANE); } });

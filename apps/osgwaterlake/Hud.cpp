@@ -10,8 +10,10 @@ using osgWater::WaterSettings;
 std::string describeSettings(const WaterSettings& s)
 {
     std::ostringstream o;
-    o << "refraction " << (!s.getRefractionEnabled() ? "off" : s.getRefractionLookup() == WaterSettings::ITERATIVE
-                                                                 ? "iterative/" + std::to_string(s.getSearchSteps())
+    o << "refraction " << (!s.getRefractionEnabled() ? "off" : s.getRefractionLookup() == WaterSettings::ITERATIVE ||
+                                                                         s.getRefractionLookup() == WaterSettings::BRACKETED
+                                                                 ? std::string(WaterSettings::refractionLookupName(s.getRefractionLookup())) + "/" +
+                                                                       std::to_string(s.getSearchSteps())
                                                                  : std::string(WaterSettings::refractionLookupName(s.getRefractionLookup())))
       << (s.getRefractionCameraRotation() ? " rotated" : "") << ", reflection " << (s.getReflectionEnabled() ? WaterSettings::reflectionLookupName(s.getReflectionLookup()) : "off")
       << ", fresnel " << WaterSettings::fresnelModelName(s.getFresnelModel())
