@@ -77,8 +77,10 @@ CausticsCamera::CausticsCamera(osg::Group* scene, osg::StateSet* sceneState, osg
     _timer->attach(_photons.get(), _gather.get());
     _depthTimer = new GpuTimer;
     _depthTimer->setEnabled(false);
-    if (_shade.valid()) _depthTimer->attach(this, _shade.get()); // drawn in this order (cullPass())
-    else _depthTimer->attach(this);
+    _depthTimer->attach(this);
+    _shadeTimer = new GpuTimer; // its own: tiled caustics do not draw the shade map
+    _shadeTimer->setEnabled(false);
+    if (_shade.valid()) _shadeTimer->attach(_shade.get());
 }
 
 osg::StateSet* CausticsCamera::depthOnlyState()
@@ -257,6 +259,18 @@ osg::Matrixd CausticsCamera::shadeProjection(const osg::Matrixd& sun, const osg:
     proj.getOrtho(l, r, b, t, n, fa);
     sunProjection(sun, tall).getOrtho(tl, tr, tb, tt, tn, tf);
     return osg::Matrixd::ortho(l, r, b, t, std::min(n, tn), fa);
+}
+
+double CausticsCamera::getDepthMilliseconds() const
+{
+    const double depth = _depthTimer->getMilliseconds(), shade = _shadeTimer->getMilliseconds();
+    return depth >= 0.0 && shade >= 0.0 && _shade.valid() && !_tiled ? depth + shade : depth;
+}
+
+void CausticsCamera::setTimingEnabled(bool on)
+{
+    _depthTimer->setEnabled(on);
+    _shadeTimer->setEnabled(on);
 }
 
 double CausticsCamera::getTexelSize() const
