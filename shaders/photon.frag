@@ -27,7 +27,7 @@ uniform float osgWater_PhotonExtinction; // the green channel's sun extinction (
 uniform float osgWater_FresnelQ;
 uniform int osgWater_SearchSteps;
 uniform float osgWater_SearchTolerance;
-const float kSunReachesTolerance = 0.005; // metres: the depth map's precision over the sun's box
+const float kSunReachesTolerance = 0.005; // metres: well above the shade map's precision over its depth range
 #ifdef OSGWATER_REFLECTED_PHOTONS
 uniform mat4 osgWater_MirrorEye; // the mirror in the water plane, in this camera's eye space
 #endif
@@ -124,7 +124,8 @@ void main()
 #else
         float d = length(hit.A - start);
         // the sun's ray meets the scene before this piece of water (the water's mesh runs on under
-        // the shore): a dark photon, kept so that the mesh's triangles fade to the waterline
+        // the shore, or a pier stands above it): a dark photon, kept so that the mesh's triangles
+        // fade to the waterline and to the shadow's edge
         photon = vec4(tc, owSunReaches(start) ? (1.0 - F) * exp(-osgWater_PhotonExtinction * d) : 0.0, 1.0);
 #endif
     }

@@ -35,7 +35,7 @@ void main()
 #endif
     // NaN fails every comparison: such a photon is dropped like a missing one; one that landed on
     // a neighbouring tile is kept (the tiled gather shifts it in), and so is a dark one (energy 0:
-    // the sun meets the shore before its water), so that the mesh's triangles fade to it
+    // the sun meets the scene before its water), so that the mesh's triangles fade to it
     bool ok = p.w > 0.5 && p.z >= 0.0 && p.x > -1.01 && p.x < 2.01 && p.y > -1.01 && p.y < 2.01;
 #ifdef OSGWATER_AREA_MESH
     vec2 straightDown = (texel + 0.5) / osgWater_PhotonGrid; // where the sun ray lands unrefracted

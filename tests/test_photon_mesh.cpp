@@ -126,7 +126,7 @@ TEST(PhotonMesh, ATriangleWithADroppedPhotonIsDropped)
 
 TEST(PhotonMesh, DarkPhotonsKeepTheirTrianglesWhichFadeToThem)
 {
-    // photons of zero energy (the sun's ray meets the shore before the water there) from column 8
+    // photons of zero energy (the sun's ray meets the scene before the water there) from column 8
     // on: the cells between column 7 and 8 fade from the lit side to the dark one and give half a
     // cell each; dropping the dark photons instead would leave those cells unlit
     const int n = 16, size = 64;
