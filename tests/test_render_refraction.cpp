@@ -251,3 +251,46 @@ TEST(RenderRefraction, CheckerboardColourIsTheOneSnellPredicts)
     ASSERT_GT(checked, 3000);
     EXPECT_LE(wrong, checked / 200) << wrong << " of " << checked << " pixels show the wrong cell";
 }
+
+TEST(RenderRefraction, ABladeSeenFromBehindShowsWhenItsSubgraphTurnsFaceCullingOff)
+{
+    // The refraction pass culls back faces, so that clipped solids do not show their insides
+    // (thesis fig. 3). Thin one-faced geometry seen from both sides (weeds) says so the OSG way,
+    // GL_CULL_FACE off on its subgraph, and then shows through the water from behind as it does
+    // in the view. A red blade under flat water, its front face turned away from the eye.
+    const float x0 = -0.5f, x1 = 0.5f, y = 3.0f, zLo = -1.9f, zHi = -0.5f;
+    osg::ref_ptr<osg::Group> bed = new osg::Group;
+    bed->addChild(checkerPlane(-kDepth, 120.0f, kCell));
+    osg::ref_ptr<osg::Group> blade = new osg::Group;
+    blade->addChild(emissiveQuad(osg::Vec3(x1, y, zLo), osg::Vec3(x0, y, zLo), osg::Vec3(x0, y, zHi),
+                                 osg::Vec3(x1, y, zHi), osg::Vec4(1, 0, 0, 1))); // front face towards +y
+    bed->addChild(blade.get());
+    RefractionScene sc(bed.get());
+    REQUIRE_GL(sc.h);
+    sc.water->getSettings()->setRefractionLookup(WaterSettings::ITERATIVE);
+    // the pixels whose refracted ray meets the blade 5 cm or more inside its edges
+    const BedHit bladeHit = [&](const osg::Vec3d& U, const osg::Vec3d& R, osg::Vec3d& X) {
+        if (!(R.y() > 1e-6)) return false;
+        X = U + R * ((y - U.y()) / R.y());
+        const double m = 0.05;
+        return X.x() > x0 + m && X.x() < x1 - m && X.z() > zLo + m && X.z() < zHi - m;
+    };
+    auto redShare = [&]() {
+        sc.h.frame(0.0);
+        osg::ref_ptr<osg::Image> img = sc.h.readColor();
+        int n = 0, red = 0;
+        for (const Pixel& p : sc.exactHits(bladeHit)) {
+            const float* c = pixel(img.get(), p.x, p.y);
+            ++n;
+            red += c[0] > 0.8f && c[1] < 0.2f && c[2] < 0.2f;
+        }
+        EXPECT_GT(n, 200);
+        return double(red) / std::max(n, 1);
+    };
+    const double culled = redShare(); // the thesis's rule: a back face is not drawn
+    blade->getOrCreateStateSet()->setMode(GL_CULL_FACE, osg::StateAttribute::OFF);
+    const double twoSided = redShare();
+    std::printf("blade pixels shown red: culled %.1f%%, face culling off %.1f%%\n", 100 * culled, 100 * twoSided);
+    EXPECT_LT(culled, 0.01);
+    EXPECT_GT(twoSided, 0.99); // tolerance: every pixel 5 cm inside the blade's edges
+}

@@ -231,8 +231,6 @@ bool writeObj(const std::string& dir, int grid, int grassBlades, int weedBlades,
     ObjWriter obj(dir + "/lake.obj", "lake.mtl");
     if (!obj.ok()) return false;
     terrain(obj, grid);
-    blades(obj, "grass", "grassblade", grassBlades, 0.35f, 2.5f, 0.25f, 0.6f, 101);
-    blades(obj, "weeds", "weed", weedBlades, -4.5f, -0.6f, 0.3f, 1.1f, 202);
     int t = 0;
     for (const lake::Tree& tr : lake::kTrees) {
         const osg::Vec3 base(tr.x, tr.y, lake::height(tr.x, tr.y) - 0.2f);
@@ -267,6 +265,14 @@ bool writeObj(const std::string& dir, int grid, int grassBlades, int weedBlades,
     box(obj, osg::Vec3(lake::kCrateX - 1.0f, lake::kCrateY - 0.8f, cz - 0.2f), osg::Vec3(lake::kCrateX + 1.0f, lake::kCrateY + 0.8f, cz + 1.2f));
     nv = obj.vertices();
     nf = obj.faces();
+    // the blades in their own file: one face each, seen from both sides, so lake.osgt turns face
+    // culling off for them (the refraction pass culls back faces, for the insides of clipped solids)
+    ObjWriter thin(dir + "/blades.obj", "lake.mtl");
+    if (!thin.ok()) return false;
+    blades(thin, "grass", "grassblade", grassBlades, 0.35f, 2.5f, 0.25f, 0.6f, 101);
+    blades(thin, "weeds", "weed", weedBlades, -4.5f, -0.6f, 0.3f, 1.1f, 202);
+    nv += thin.vertices();
+    nf += thin.faces();
     // the sky in its own file: lake.osgt culls its back faces, so from outside (osgviewer's home
     // view) it does not hide the lake
     ObjWriter sky(dir + "/sky.obj", "lake.mtl");
@@ -301,6 +307,11 @@ bool writeOsgt(const std::string& path)
     scene->setFileName(0, "lake/lake.obj");
     scene->setLoadingExternalReferenceMode(osg::ProxyNode::LOAD_IMMEDIATELY);
     water->addChild(scene.get());
+    osg::ref_ptr<osg::ProxyNode> blades = new osg::ProxyNode;
+    blades->setFileName(0, "lake/blades.obj");
+    blades->setLoadingExternalReferenceMode(osg::ProxyNode::LOAD_IMMEDIATELY);
+    blades->getOrCreateStateSet()->setMode(GL_CULL_FACE, osg::StateAttribute::OFF); // both sides, in every pass
+    water->addChild(blades.get());
     osg::ref_ptr<osg::ProxyNode> sky = new osg::ProxyNode;
     sky->setFileName(0, "lake/sky.obj");
     sky->setLoadingExternalReferenceMode(osg::ProxyNode::LOAD_IMMEDIATELY);
@@ -334,7 +345,7 @@ int main(int argc, char** argv)
         std::cerr << "error: cannot write the lake into " << dir << std::endl;
         return 1;
     }
-    std::cout << "lake: " << nv << " vertices, " << nf << " faces in " << dir << "/lake.obj and sky.obj" << std::endl;
+    std::cout << "lake: " << nv << " vertices, " << nf << " faces in " << dir << "/lake.obj, blades.obj and sky.obj" << std::endl;
     if (!osgt.empty() && !writeOsgt(osgt)) {
         std::cerr << "error: cannot write " << osgt << std::endl;
         return 1;
