@@ -59,7 +59,8 @@ bool nearFarForBound(const osg::Matrixd& view, const osg::BoundingSphere& bound,
     return true;
 }
 
-osg::Matrixd rotatedRefractionView(const osg::Matrixd& view, const osg::Matrixd& projection, double level, double eta)
+osg::Matrixd rotatedRefractionView(const osg::Matrixd& view, const osg::Matrixd& projection, double level, double eta,
+                                   double distanceScale)
 {
     const osg::Matrixd inv = osg::Matrixd::inverse(view * projection);
     // the ray through the bottom-centre of the screen, in the local frame
@@ -82,10 +83,13 @@ osg::Matrixd rotatedRefractionView(const osg::Matrixd& view, const osg::Matrixd&
     R.normalize();
     osg::Quat q;
     q.makeRotate(I, R);
-    // rotate the camera (its camera-to-local transform) about O
+    // rotate the camera (its camera-to-local transform) about O, then move it along the refracted
+    // ray: the rotation took it to O - |C1 - O| R
     const osg::Matrixd cameraToLocal = osg::Matrixd::inverse(view);
     const osg::Matrixd about = osg::Matrixd::translate(-O) * osg::Matrixd::rotate(q) * osg::Matrixd::translate(O);
-    return osg::Matrixd::inverse(cameraToLocal * about);
+    const double scale = std::isfinite(distanceScale) && distanceScale > 0.0 ? distanceScale : 1.0;
+    const osg::Matrixd back = osg::Matrixd::translate(-R * ((scale - 1.0) * (C1 - O).length()));
+    return osg::Matrixd::inverse(cameraToLocal * about * back);
 }
 
 osg::Vec4d planeToEye(const osg::Vec4d& p, const osg::Matrixd& view)

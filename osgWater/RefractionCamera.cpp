@@ -23,9 +23,11 @@ void RefractionCamera::update(const PassContext& ctx)
     setKeepPlane(osg::Plane(0.0, 0.0, s, -s * ctx.level + ctx.clearance));
 
     osg::Matrixd view = ctx.view;
-    if (ctx.settings && ctx.settings->getRefractionCameraRotation() && !ctx.eyeBelow)
-        view = rotatedRefractionView(ctx.view, ctx.projection, ctx.level,
-                                     ctx.settings->getAirIOR() / ctx.settings->getWaterIOR());
+    if (ctx.settings && ctx.settings->getRefractionCameraRotation() && !ctx.eyeBelow) {
+        const double eta = ctx.settings->getAirIOR() / ctx.settings->getWaterIOR();
+        view = rotatedRefractionView(ctx.view, ctx.projection, ctx.level, eta,
+                                     ctx.settings->getRefractionCameraApparentEye() ? 1.0 / eta : 1.0);
+    }
     double zn = 0.1, zf = 1000.0;
     nearFarForBound(view, ctx.scene, zn, zf);
     const osg::Matrixd proj = withNearFar(extendFov(ctx.projection, ctx.fovExtension), zn, zf);

@@ -89,6 +89,7 @@ REGISTER_OBJECT_WRAPPER(osgWater_WaterSettings, new osgWater::WaterSettings, osg
     ADD_INT_SERIALIZER(RefractionTextureSize, 512);
     ADD_PRECISE_FLOAT_SERIALIZER(PassTargetScale, 0.0f);
     ADD_BOOL_SERIALIZER(RefractionCameraRotation, true);
+    ADD_BOOL_SERIALIZER(RefractionCameraApparentEye, true);
     ADD_BOOL_SERIALIZER(ReflectionEnabled, true);
     ADD_BOOL_SERIALIZER(RefractionEnabled, true);
     ADD_BOOL_SERIALIZER(CausticsEnabled, true);

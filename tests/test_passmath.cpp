@@ -134,6 +134,38 @@ TEST(PassMath, RefractionRotationTurnsTheBottomRayOntoItsRefraction)
     EXPECT_EQ(rotatedRefractionView(sky, proj, 0.0, eta), sky);
 }
 
+TEST(PassMath, TheApparentEyeLiesOnTheRefractedBottomRayNTimesAsFarFromO)
+{
+    // the rotated camera moved back along the refracted ray: the bottom-centre ray is the same line
+    // (through O, along R), the camera 1 / eta times as far from O as the eye; a scale that is not
+    // a positive number is the thesis's rigid rotation
+    const osg::Matrixd view = lookAt(osg::Vec3d(3, -20, 5), osg::Vec3d(0, 0, 0));
+    const osg::Matrixd proj = osg::Matrixd::perspective(45.0, 1.0, 0.1, 100.0);
+    const double eta = 1.0 / 1.333, level = 0.4;
+    const osg::Matrixd rigid = rotatedRefractionView(view, proj, level, eta);
+    const osg::Matrixd apparent = rotatedRefractionView(view, proj, level, eta, 1.0 / eta);
+    auto bottomRay = [&](const osg::Matrixd& v, osg::Vec3d& origin) {
+        const osg::Matrixd inv = osg::Matrixd::inverse(v * proj);
+        const osg::Vec3d a = osg::Vec3d(0, -1, -1) * inv, b = osg::Vec3d(0, -1, 1) * inv;
+        origin = eyePosition(v);
+        osg::Vec3d d = b - a;
+        d.normalize();
+        return d;
+    };
+    osg::Vec3d c0, c1, c2;
+    const osg::Vec3d I = bottomRay(view, c0), R1 = bottomRay(rigid, c1), R2 = bottomRay(apparent, c2);
+    EXPECT_NEAR((R1 - R2).length(), 0.0, 1e-9); // the same direction: only the position moved
+    const osg::Vec3d O = c0 + I * ((level - c0.z()) / I.z());
+    const osg::Vec3d O2 = c2 + R2 * ((level - c2.z()) / R2.z());
+    EXPECT_NEAR((O2 - O).length(), 0.0, 1e-6);
+    EXPECT_NEAR((c2 - O).length(), (c0 - O).length() / eta, 1e-6);
+    for (double bad : { 0.0, -2.0, std::nan("") }) {
+        const osg::Matrixd m = rotatedRefractionView(view, proj, level, eta, bad);
+        for (int r = 0; r < 4; ++r)
+            for (int c = 0; c < 4; ++c) EXPECT_NEAR(m(r, c), rigid(r, c), 1e-12);
+    }
+}
+
 TEST(PassMath, RefractionRotationIsContinuousAsTheEyeComesDownToTheLevel)
 {
     // an eye in a trough is below the level but in the air: the rotation must not switch off there

@@ -28,11 +28,12 @@ bool flatBedHit(const osg::Vec3d& U, const osg::Vec3d& R, osg::Vec3d& X)
 }
 
 struct RefractionScene {
-    Harness h{ 200, 150 };
+    Harness h;
     osg::ref_ptr<WaterNode> water = new WaterNode;
     osg::Vec3d eye{ 0, -4, 3 };
 
-    explicit RefractionScene(osg::Node* bed = checkerPlane(-kDepth, 120.0f, kCell))
+    explicit RefractionScene(osg::Node* bed = checkerPlane(-kDepth, 120.0f, kCell), int width = 200, int height = 150)
+        : h(width, height)
     {
         if (!h.ok()) return;
         water->getSurface()->setWaves({});
@@ -293,4 +294,163 @@ TEST(RenderRefraction, ABladeSeenFromBehindShowsWhenItsSubgraphTurnsFaceCullingO
     std::printf("blade pixels shown red: culled %.1f%%, face culling off %.1f%%\n", 100 * culled, 100 * twoSided);
     EXPECT_LT(culled, 0.01);
     EXPECT_GT(twoSided, 0.99); // tolerance: every pixel 5 cm inside the blade's edges
+}
+
+namespace {
+
+// an unlit box, its faces turned outwards (the refraction pass culls back faces)
+osg::Group* emissiveBox(const osg::Vec3& lo, const osg::Vec3& hi, const osg::Vec4& color)
+{
+    osg::Group* g = new osg::Group;
+    const osg::Vec3 c = (lo + hi) * 0.5f, e = (hi - lo) * 0.5f;
+    for (int axis = 0; axis < 3; ++axis)
+        for (float s : { -1.0f, 1.0f }) {
+            osg::Vec3 n, u, v;
+            n[axis] = s;
+            u[(axis + 1) % 3] = 1.0f;
+            v[(axis + 2) % 3] = 1.0f;
+            if (s < 0.0f) std::swap(u, v); // u x v along n: counter-clockwise seen from outside
+            auto corner = [&](float a, float b) {
+                const osg::Vec3 p = n + u * a + v * b;
+                return c + osg::Vec3(p.x() * e.x(), p.y() * e.y(), p.z() * e.z());
+            };
+            g->addChild(emissiveQuad(corner(-1, -1), corner(1, -1), corner(1, 1), corner(-1, 1), color));
+        }
+    return g;
+}
+
+// where the ray o + t d (t > 0) enters the box; false when it misses
+bool rayBox(const osg::Vec3d& o, const osg::Vec3d& d, const osg::Vec3d& lo, const osg::Vec3d& hi, double& tIn)
+{
+    double t0 = 0.0, t1 = 1e30;
+    for (int i = 0; i < 3; ++i) {
+        if (std::fabs(d[i]) < 1e-12) {
+            if (o[i] < lo[i] || o[i] > hi[i]) return false;
+            continue;
+        }
+        double a = (lo[i] - o[i]) / d[i], b = (hi[i] - o[i]) / d[i];
+        if (a > b) std::swap(a, b);
+        t0 = std::max(t0, a);
+        t1 = std::min(t1, b);
+    }
+    tIn = t0;
+    return t0 <= t1;
+}
+
+}
+
+namespace {
+
+// A red post 0.4 m square standing on a white bed 1 m down, its top at `top`, seen from 3 m up and
+// 5.5 m away (the refracted rays run 41 degrees from the vertical under the water, the eye's straight
+// rays 61) at 800 x 600 with a 1024-texel refraction texture (a texel about a pixel). Per pixel the
+// exact class (post or bed, Snell in double precision) against the rendered colour; a pixel of the
+// wrong class is off by the distance in pixels to the nearest pixel whose exact class it shows.
+struct PostSilhouette {
+    int outline = 0;                  // the exact silhouette's pixels
+    int wrong = 0, overOne = 0;       // pixels of the wrong class, and those more than 1 px off
+    double worst = 0.0;
+    ContextProbe gl{ false, "" };      // whether it could render
+};
+
+PostSilhouette postSilhouette(double top, bool rotation, bool apparentEye)
+{
+    const osg::Vec3d lo(-0.2, 1.3, -1.0), hi(0.2, 1.7, top);
+    osg::ref_ptr<osg::Group> scene = new osg::Group;
+    scene->addChild(emissiveQuad(osg::Vec3(-60, -60, -1), osg::Vec3(60, -60, -1), osg::Vec3(60, 60, -1),
+                                 osg::Vec3(-60, 60, -1), osg::Vec4(1, 1, 1, 1)));
+    scene->addChild(emissiveBox(lo, hi, osg::Vec4(1, 0, 0, 1)));
+    RefractionScene sc(scene.get(), 800, 600);
+    PostSilhouette r;
+    r.gl = ContextProbe{ sc.h.ok(), sc.h.why() };
+    if (!sc.h.ok()) return r;
+    sc.h.lookAt(sc.eye, osg::Vec3d(0, 1.5, -0.5));
+    WaterSettings* s = sc.water->getSettings();
+    s->setRefractionCameraRotation(rotation);
+    s->setRefractionCameraApparentEye(apparentEye);
+    s->setRefractionTextureSize(1024);
+    const int W = sc.h.width(), H = sc.h.height();
+    // the exact class per pixel: 1 post, 0 bed, -1 not measured (no water, or the post in the air)
+    std::vector<int> exact(size_t(W) * H, -1);
+    const osg::Matrixd inv = osg::Matrixd::inverse(sc.h.camera()->getViewMatrix() * sc.h.camera()->getProjectionMatrix());
+    for (int y = 0; y < H; ++y)
+        for (int x = 0; x < W; ++x) {
+            const double nx = (x + 0.5) / W * 2 - 1, ny = (y + 0.5) / H * 2 - 1;
+            osg::Vec3d d = osg::Vec3d(nx, ny, 1) * inv - osg::Vec3d(nx, ny, -1) * inv;
+            d.normalize();
+            if (d.z() > -0.05) continue;
+            const osg::Vec3d U = sc.eye + d * (-sc.eye.z() / d.z());
+            double t;
+            if (rayBox(sc.eye, d, lo, hi, t) && t < (U - sc.eye).length()) continue;
+            const double eta = 1.0 / 1.333, ci = -d.z(), k = 1.0 - eta * eta * (1.0 - ci * ci);
+            const osg::Vec3d R = d * eta + osg::Vec3d(0, 0, 1) * (eta * ci - std::sqrt(k));
+            exact[size_t(y) * W + x] = rayBox(U, R, lo, hi, t) && (U + R * t).z() > -1.0 + 1e-9 ? 1 : 0;
+        }
+    for (int y = 1; y + 1 < H; ++y)
+        for (int x = 1; x + 1 < W; ++x) {
+            const int e = exact[size_t(y) * W + x];
+            if (e < 0) continue;
+            for (int k = 0; k < 4; ++k) {
+                const int n = exact[size_t(y + (k == 0) - (k == 1)) * W + x + (k == 2) - (k == 3)];
+                if (n >= 0 && n != e) { ++r.outline; break; }
+            }
+        }
+    sc.h.frame(0.0);
+    osg::ref_ptr<osg::Image> img = sc.h.readColor();
+    EXPECT_TRUE(allFinite(img.get()));
+    for (int y = 0; y < H; ++y)
+        for (int x = 0; x < W; ++x) {
+            const int e = exact[size_t(y) * W + x];
+            if (e < 0) continue;
+            const float* c = pixel(img.get(), x, y);
+            const int shown = c[0] > 0.5f && c[1] < 0.5f ? 1 : 0;
+            if (shown == e) continue;
+            ++r.wrong;
+            double best = 1e9;
+            for (int yy = std::max(0, y - 40); yy < std::min(H, y + 41); ++yy)
+                for (int xx = std::max(0, x - 40); xx < std::min(W, x + 41); ++xx)
+                    if (exact[size_t(yy) * W + xx] == shown) best = std::min(best, std::hypot(xx - x, yy - y));
+            r.overOne += best > 1.0 + 1e-9;
+            r.worst = std::max(r.worst, best);
+        }
+    return r;
+}
+
+void printSilhouette(const char* what, const PostSilhouette& r)
+{
+    std::printf("%s: %d wrong pixels, %d over 1 px, worst %.1f px (silhouette %d px)\n", what, r.wrong, r.overOne, r.worst,
+                r.outline);
+}
+
+}
+
+TEST(RenderRefraction, APostThroughShallowWaterIsSeenWithinAPixelOfSnellsSilhouetteFromTheApparentEye)
+{
+    // the post rises 1 m out of the water, as the lake's does: its part in the air hides the water
+    // behind it, where the refracted rays would reach the bed the pass cannot see
+    const PostSilhouette apparent = postSilhouette(1.0, true, true);
+    REQUIRE_GL(apparent.gl);
+    printSilhouette("apparent eye", apparent);
+    printSilhouette("the thesis's rotation", postSilhouette(1.0, true, false)); // measured: 4 over 1 px, worst 22
+    ASSERT_GT(apparent.outline, 200);
+    // tolerance: every pixel of the wrong class within 1 px of the exact silhouette (measured 0 over)
+    EXPECT_EQ(apparent.overOne, 0);
+    EXPECT_LE(apparent.worst, 1.0 + 1e-9);
+}
+
+TEST(RenderRefraction, ASubmergedPostsFarSideIsNearerSnellsFromTheApparentEyeThanFromTheThesissRotation)
+{
+    // the post's top 0.3 m under the water: the refracted rays past its far side reach bed that the
+    // pass, looking along straighter rays, sees behind the post. The nearer its eye lies to where the
+    // refracted rays seem to come from, the narrower that band; a second depth layer would close it
+    const PostSilhouette apparent = postSilhouette(-0.3, true, true);
+    REQUIRE_GL(apparent.gl);
+    const PostSilhouette thesis = postSilhouette(-0.3, true, false), straight = postSilhouette(-0.3, false, false);
+    printSilhouette("apparent eye", apparent);
+    printSilhouette("the thesis's rotation", thesis);
+    printSilhouette("not rotated", straight);
+    // measured: 232, 416 and 752 pixels over 1 px; worst 6, 10 and 17 px
+    EXPECT_LT(apparent.overOne, 0.75 * thesis.overOne);
+    EXPECT_LT(thesis.overOne, 0.75 * straight.overOne);
+    EXPECT_LT(apparent.worst, thesis.worst);
 }

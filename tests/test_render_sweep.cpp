@@ -79,7 +79,7 @@ struct Group {
     float tile;       // tileable caustics' tile (0: off)
     bool environment; // the environment cube map (drawn from the scene)
     int textureSize, photonGrid, viewport;
-    bool rotation, glow, reflection, refraction;
+    bool rotation, apparentEye, glow, reflection, refraction;
     DebugOutput debug;
 };
 // ... cheap ones (uniforms, the camera, the waves) per configuration.
@@ -129,6 +129,7 @@ std::vector<Group> groups()
         x.photonGrid = i == 25 ? 8192 : (i % 3 ? 16 : 64);
         x.viewport = (i == 40 || i == 91) ? 8192 : (i % 7 == 3 ? 1 : 64);
         x.rotation = i % 4 != 1;
+        x.apparentEye = i % 3 != 2; // with the rotation: moved to the apparent eye, or the thesis's
         x.glow = i % 6 != 2;
         x.reflection = i % 19 != 5;
         x.refraction = i % 23 != 7;
@@ -178,6 +179,7 @@ std::string describe(const Group& g, const Config& c)
       << (g.planeLookups ? ", plane reflection" : g.offsetReflection ? ", offset reflection" : ", reflection search")
       << ", fresnel " << g.fresnel << ", underwater " << g.underwater << ", gather " << g.gather << (g.areaMesh ? " (mesh)" : "") << (g.reflective ? " (reflective)" : "") << (g.tile > 0.0f ? " (tiled)" : "") << (g.environment ? ", environment map" : "") << ", textures "
       << g.textureSize << ", photons " << g.photonGrid << ", viewport " << g.viewport << ", rotation " << g.rotation
+      << (g.rotation && !g.apparentEye ? " (thesis)" : "")
       << ", glow " << g.glow << ", debug " << g.debug << "; eye height " << c.eyeHeight << ", pitch " << c.pitch
       << ", yaw " << c.yaw << ", sun " << c.sunElevation << ", IOR " << c.ior << ", t " << c.time << ", amplitude "
       << c.amplitude << ", near " << c.nearPlane;
@@ -206,6 +208,7 @@ void apply(WaterNode* water, const Group& g)
     s->setCausticsResolution(g.textureSize);
     s->setPhotonGridSize(g.photonGrid);
     s->setRefractionCameraRotation(g.rotation);
+    s->setRefractionCameraApparentEye(g.apparentEye);
     s->setGlowEnabled(g.glow);
     s->setReflectionEnabled(g.reflection);
     s->setRefractionEnabled(g.refraction);

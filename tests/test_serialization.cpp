@@ -48,6 +48,7 @@ osg::ref_ptr<WaterNode> pond()
     s->setFovExtensionNear(1.4f);
     s->setReflectionTextureSize(256);
     s->setRefractionCameraRotation(false);
+    s->setRefractionCameraApparentEye(false);
     s->setReflectionEnabled(false);
     s->setPhotonGridSize(128);
     s->setCausticsFocused(false);
@@ -108,6 +109,7 @@ TEST(Serialization, ExpectedTextReadsBackIntoTheSameNode)
     EXPECT_EQ(s->getReflectionTextureSize(), 256);
     EXPECT_EQ(s->getRefractionTextureSize(), 512); // absent: default
     EXPECT_FALSE(s->getRefractionCameraRotation());
+    EXPECT_FALSE(s->getRefractionCameraApparentEye());
     EXPECT_FALSE(s->getReflectionEnabled());
     EXPECT_TRUE(s->getRefractionEnabled());
     EXPECT_EQ(s->getPhotonGridSize(), 128);

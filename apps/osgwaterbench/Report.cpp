@@ -36,6 +36,7 @@ nlohmann::json toJson(const Record& r)
     j["steps"] = r.steps;
     j["texture_size"] = r.textureSize;
     j["rotation"] = r.rotation;
+    j["apparent_eye"] = r.apparentEye;
     j["fresnel"] = r.fresnel;
     j["caustics"] = r.caustics;
     j["glow"] = r.glow;

@@ -11,7 +11,7 @@ namespace bench {
 struct Record {
     std::string technique, view, lookup, fresnel, caustics;
     int steps = 0, textureSize = 0;
-    bool rotation = true, glow = true, eyeBelow = false;
+    bool rotation = true, apparentEye = true, glow = true, eyeBelow = false;
     double t = 0.0;
     double frameMs = 0.0, plainMs = 0.0, ratio = 0.0;
     size_t waterPixels = 0, misses = 0, tirMismatch = 0, coverageMismatch = 0, nanPixels = 0;

@@ -23,6 +23,7 @@ std::vector<Technique> allTechniques()
     t.push_back({ "mesh-grid", [](WaterSettings&) {}, osgWater::WaterSurface::MESH_GRID });
     t.push_back({ "environment-map", [](WaterSettings& s) { s.setEnvironmentMapEnabled(true); } });
     t.push_back({ "no-rotation", [](WaterSettings& s) { s.setRefractionCameraRotation(false); } });
+    t.push_back({ "rotation-thesis", [](WaterSettings& s) { s.setRefractionCameraApparentEye(false); } });
     for (int size : { 256, 1024 })
         t.push_back({ "texture-" + std::to_string(size), [size](WaterSettings& s) {
                          s.setReflectionTextureSize(size);

@@ -285,6 +285,7 @@ int main(int argc, char** argv)
             r.steps = s->getRefractionLookup() == osgWater::WaterSettings::ONE_STEP ? 1 : s->getSearchSteps();
             r.textureSize = s->getRefractionTextureSize();
             r.rotation = s->getRefractionCameraRotation();
+            r.apparentEye = r.rotation && s->getRefractionCameraApparentEye();
             r.fresnel = fresnelName(*s);
             r.caustics = causticsName(*s);
             r.glow = s->getGlowEnabled();

@@ -15,7 +15,7 @@ std::string describeSettings(const WaterSettings& s)
                                                                  ? std::string(WaterSettings::refractionLookupName(s.getRefractionLookup())) + "/" +
                                                                        std::to_string(s.getSearchSteps())
                                                                  : std::string(WaterSettings::refractionLookupName(s.getRefractionLookup())))
-      << (s.getRefractionCameraRotation() ? " rotated" : "") << ", reflection " << (s.getReflectionEnabled() ? WaterSettings::reflectionLookupName(s.getReflectionLookup()) : "off")
+      << (s.getRefractionCameraRotation() ? (s.getRefractionCameraApparentEye() ? " apparent eye" : " rotated") : "") << ", reflection " << (s.getReflectionEnabled() ? WaterSettings::reflectionLookupName(s.getReflectionLookup()) : "off")
       << ", fresnel " << WaterSettings::fresnelModelName(s.getFresnelModel())
       << ", water ";
     if (s.getWaterModel() == WaterSettings::WATER_PER_CHANNEL) o << "per-channel";

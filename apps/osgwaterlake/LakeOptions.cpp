@@ -67,6 +67,7 @@ void LakeOptions::describe(osg::ApplicationUsage& u)
     u.addCommandLineOption("--no-reflection", "Switch reflection off");
     u.addCommandLineOption("--no-refraction", "Switch refraction off");
     u.addCommandLineOption("--no-rotation", "Do not rotate the refraction camera (thesis 5.1)");
+    u.addCommandLineOption("--thesis-rotation", "Rotate the refraction camera rigidly about O, as the thesis does (not to the apparent eye)");
     u.addCommandLineOption("--no-caustics", "Switch caustics off");
     u.addCommandLineOption("--gather <auto|copy|texture|cpu>", "Caustics photon gather: points from a copied vertex buffer, points reading the photon texture, CPU");
     u.addCommandLineOption("--caustics <photons|mesh>", "Caustics method: photon splatting (thesis) or the area-ratio mesh (DeepWater)");
@@ -142,6 +143,7 @@ bool LakeOptions::read(osg::ArgumentParser& args)
     if (args.read("--no-reflection")) _setters.push_back([](WaterSettings& w) { w.setReflectionEnabled(false); });
     if (args.read("--no-refraction")) _setters.push_back([](WaterSettings& w) { w.setRefractionEnabled(false); });
     if (args.read("--no-rotation")) _setters.push_back([](WaterSettings& w) { w.setRefractionCameraRotation(false); });
+    if (args.read("--thesis-rotation")) _setters.push_back([](WaterSettings& w) { w.setRefractionCameraApparentEye(false); });
     if (args.read("--no-caustics")) _setters.push_back([](WaterSettings& w) { w.setCausticsEnabled(false); });
     if (!readEnumOption(args, "--gather", "auto|copy|texture|cpu", WaterSettings::causticsGatherFromName,
                         &WaterSettings::setCausticsGather, _setters))

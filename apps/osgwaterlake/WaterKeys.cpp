@@ -20,7 +20,13 @@ bool WaterKeys::handle(const osgGA::GUIEventAdapter& ea, osgGA::GUIActionAdapter
     case '+': case '=': s.setSearchSteps(std::min(s.getSearchSteps() + 1, 8)); return true;
     case '-': s.setSearchSteps(std::max(s.getSearchSteps() - 1, 1)); return true;
     case 'm': s.setFresnelModel(WaterSettings::FresnelModel((int(s.getFresnelModel()) + 1) % (WaterSettings::FRESNEL_RECIPROCAL + 1))); return true;
-    case 'o': s.setRefractionCameraRotation(!s.getRefractionCameraRotation()); return true;
+    case 'o': // rotated to the apparent eye -> the thesis's rigid rotation -> not rotated -> ...
+        if (!s.getRefractionCameraRotation()) {
+            s.setRefractionCameraRotation(true);
+            s.setRefractionCameraApparentEye(true);
+        } else if (s.getRefractionCameraApparentEye()) s.setRefractionCameraApparentEye(false);
+        else s.setRefractionCameraRotation(false);
+        return true;
     case 'k': s.setCausticsEnabled(!s.getCausticsEnabled()); return true;
     case 'l': s.setGlowEnabled(!s.getGlowEnabled()); return true;
     case 'n':
@@ -91,7 +97,7 @@ void WaterKeys::getUsage(osg::ApplicationUsage& u) const
     u.addKeyboardMouseBinding("i", "Switch the surface's mesh (rings around the eye / the thesis's uniform grid)");
     u.addKeyboardMouseBinding("+/-", "More / fewer search steps");
     u.addKeyboardMouseBinding("m", "Next Fresnel model");
-    u.addKeyboardMouseBinding("o", "Toggle refraction-camera rotation");
+    u.addKeyboardMouseBinding("o", "Next refraction camera (apparent eye, the thesis's rotation, not rotated)");
     u.addKeyboardMouseBinding("k", "Toggle caustics");
     u.addKeyboardMouseBinding("g", "Next caustics gather (auto, copy, texture, CPU)");
     u.addKeyboardMouseBinding("a", "Switch caustics method (photon splatting / area-ratio mesh)");
