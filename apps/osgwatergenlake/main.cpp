@@ -303,6 +303,7 @@ bool writeOsgt(const std::string& path)
     }
     water->getSurface()->setWaves(waves);
     water->getSettings()->setCausticsResolution(512);
+    water->getSettings()->setPhotonGridSize(1024); // four photons per caustics texel, the settings' default ratio
     osg::ref_ptr<osg::ProxyNode> scene = new osg::ProxyNode;
     scene->setFileName(0, "lake/lake.obj");
     scene->setLoadingExternalReferenceMode(osg::ProxyNode::LOAD_IMMEDIATELY);
