@@ -102,23 +102,29 @@ TEST(PassMath, PlaneToEyeGivesTheSameSignedDistance)
     }
 }
 
+namespace {
+
+// the ray through the bottom-centre of a camera's screen: its direction, and its origin (the eye)
+osg::Vec3d bottomCentreRay(const osg::Matrixd& view, const osg::Matrixd& proj, osg::Vec3d& origin)
+{
+    const osg::Matrixd inv = osg::Matrixd::inverse(view * proj);
+    const osg::Vec3d a = osg::Vec3d(0, -1, -1) * inv, b = osg::Vec3d(0, -1, 1) * inv;
+    origin = eyePosition(view);
+    osg::Vec3d d = b - a;
+    d.normalize();
+    return d;
+}
+
+}
+
 TEST(PassMath, RefractionRotationTurnsTheBottomRayOntoItsRefraction)
 {
     const osg::Matrixd view = lookAt(osg::Vec3d(0, -20, 5), osg::Vec3d(0, 0, 0));
     const osg::Matrixd proj = osg::Matrixd::perspective(45.0, 1.0, 0.1, 100.0);
     const double eta = 1.0 / 1.333;
     const osg::Matrixd rv = rotatedRefractionView(view, proj, 0.0, eta);
-    // bottom-centre ray of both cameras
-    auto bottomRay = [&](const osg::Matrixd& v, osg::Vec3d& origin) {
-        const osg::Matrixd inv = osg::Matrixd::inverse(v * proj);
-        const osg::Vec3d a = osg::Vec3d(0, -1, -1) * inv, b = osg::Vec3d(0, -1, 1) * inv;
-        origin = eyePosition(v);
-        osg::Vec3d d = b - a;
-        d.normalize();
-        return d;
-    };
     osg::Vec3d c0, c1;
-    const osg::Vec3d I = bottomRay(view, c0), R = bottomRay(rv, c1);
+    const osg::Vec3d I = bottomCentreRay(view, proj, c0), R = bottomCentreRay(rv, proj, c1);
     // eq. 2 in closed form: sin(theta_t) = eta sin(theta_i), measured from the vertical
     const double si = std::sqrt(I.x() * I.x() + I.y() * I.y());
     const double st = std::sqrt(R.x() * R.x() + R.y() * R.y());
@@ -144,16 +150,8 @@ TEST(PassMath, TheApparentEyeLiesOnTheRefractedBottomRayNTimesAsFarFromO)
     const double eta = 1.0 / 1.333, level = 0.4;
     const osg::Matrixd rigid = rotatedRefractionView(view, proj, level, eta);
     const osg::Matrixd apparent = rotatedRefractionView(view, proj, level, eta, 1.0 / eta);
-    auto bottomRay = [&](const osg::Matrixd& v, osg::Vec3d& origin) {
-        const osg::Matrixd inv = osg::Matrixd::inverse(v * proj);
-        const osg::Vec3d a = osg::Vec3d(0, -1, -1) * inv, b = osg::Vec3d(0, -1, 1) * inv;
-        origin = eyePosition(v);
-        osg::Vec3d d = b - a;
-        d.normalize();
-        return d;
-    };
     osg::Vec3d c0, c1, c2;
-    const osg::Vec3d I = bottomRay(view, c0), R1 = bottomRay(rigid, c1), R2 = bottomRay(apparent, c2);
+    const osg::Vec3d I = bottomCentreRay(view, proj, c0), R1 = bottomCentreRay(rigid, proj, c1), R2 = bottomCentreRay(apparent, proj, c2);
     EXPECT_NEAR((R1 - R2).length(), 0.0, 1e-9); // the same direction: only the position moved
     const osg::Vec3d O = c0 + I * ((level - c0.z()) / I.z());
     const osg::Vec3d O2 = c2 + R2 * ((level - c2.z()) / R2.z());
