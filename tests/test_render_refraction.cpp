@@ -372,20 +372,15 @@ PostSilhouette postSilhouette(double top, bool rotation, bool apparentEye)
     const int W = sc.h.width(), H = sc.h.height();
     // the exact class per pixel: 1 post, 0 bed, -1 not measured (no water, or the post in the air)
     std::vector<int> exact(size_t(W) * H, -1);
-    const osg::Matrixd inv = osg::Matrixd::inverse(sc.h.camera()->getViewMatrix() * sc.h.camera()->getProjectionMatrix());
-    for (int y = 0; y < H; ++y)
-        for (int x = 0; x < W; ++x) {
-            const double nx = (x + 0.5) / W * 2 - 1, ny = (y + 0.5) / H * 2 - 1;
-            osg::Vec3d d = osg::Vec3d(nx, ny, 1) * inv - osg::Vec3d(nx, ny, -1) * inv;
-            d.normalize();
-            if (d.z() > -0.05) continue;
-            const osg::Vec3d U = sc.eye + d * (-sc.eye.z() / d.z());
-            double t;
-            if (rayBox(sc.eye, d, lo, hi, t) && t < (U - sc.eye).length()) continue;
-            const double eta = 1.0 / 1.333, ci = -d.z(), k = 1.0 - eta * eta * (1.0 - ci * ci);
-            const osg::Vec3d R = d * eta + osg::Vec3d(0, 0, 1) * (eta * ci - std::sqrt(k));
-            exact[size_t(y) * W + x] = rayBox(U, R, lo, hi, t) && (U + R * t).z() > -1.0 + 1e-9 ? 1 : 0;
-        }
+    const BedHit postOrBed = [&](const osg::Vec3d& U, const osg::Vec3d& R, osg::Vec3d& X) {
+        osg::Vec3d d = U - sc.eye;
+        const double toWater = d.normalize();
+        double t;
+        if (rayBox(sc.eye, d, lo, hi, t) && t < toWater) return false; // the post in the air
+        X = rayBox(U, R, lo, hi, t) ? U + R * t : U + R * ((-1.0 - U.z()) / R.z());
+        return true;
+    };
+    for (const Pixel& p : sc.exactHits(postOrBed)) exact[size_t(p.y) * W + p.x] = p.X.z() > -1.0 + 1e-9 ? 1 : 0;
     for (int y = 1; y + 1 < H; ++y)
         for (int x = 1; x + 1 < W; ++x) {
             const int e = exact[size_t(y) * W + x];
