@@ -12,6 +12,7 @@
 #include "Views.h"
 #include "../common/FrameTimer.h"
 #include "../common/SceneWater.h"
+#include "../common/Today.h"
 #include <osgWater/SceneLighting>
 #include <osgDB/FileUtils>
 #include <osgDB/ReadFile>
@@ -49,14 +50,6 @@ osg::ref_ptr<osgWater::WaterNode> loadScene(const std::string& file, osg::ref_pt
         water->getSurface()->setCenter(osg::Vec2(b.center().x(), b.center().y()));
     }
     return water;
-}
-
-std::string today()
-{
-    const std::time_t now = std::time(nullptr);
-    char buf[32];
-    std::strftime(buf, sizeof buf, "%Y-%m-%d", std::localtime(&now));
-    return buf;
 }
 
 // frame times of `frames` frames after `warmup`, advancing time like an animation
@@ -229,7 +222,7 @@ int main(int argc, char** argv)
     info.frames = o.frames;
     info.photons = o.photons;
     info.quick = o.quick;
-    info.date = today();
+    info.date = osgWaterApps::today();
     info.cpus = std::thread::hardware_concurrency();
 
     // settle: proxies loaded, programs linked, the caustics' automatic gather chosen
