@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Speed against error on the lake: installs, builds, runs osgwaterbench at 1280x720 over
 # data/lake.views, writes bench-out/results.{json,csv} and regenerates docs/BENCHMARKS.md and
-# docs/benchmark-speed-error.png, then the Fresnel fit's docs/FRESNEL.md. The published techniques take about an hour on 2 cores
+# docs/benchmark-speed-error.png, then the Fresnel fit's docs/FRESNEL.md and the virtual vertices'
+# docs/VIRTUAL_VERTICES.md. The published techniques take about an hour on 2 cores
 # (llvmpipe); `bash scripts/bench.sh --techniques all` runs every one.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -13,3 +14,5 @@ bash scripts/with-display.sh build/apps/osgwaterbench/osgwaterbench --scene data
   "$@"
 # the reciprocal-power Fresnel fit: docs/FRESNEL.md and docs/fresnel-approximations.png
 build/apps/osgwaterbench/osgwaterbench --fresnel-figure docs
+# the virtual vertices' error volume (the geometric-refraction thesis's Tables 4.1, 4.2): docs/VIRTUAL_VERTICES.md
+build/apps/osgwatervirtualvertices/osgwatervirtualvertices --scene data/lake.osgt --docs docs > /dev/null
