@@ -211,11 +211,51 @@ std::string findings(const std::vector<Table>& t)
               "crossings. That is where virtual vertices lose to a depth search over wavy water; they win where "
               "the surface is smooth against its facets, and at silhouettes, since they draw the real geometry.\n";
     }
+    if (t.size() >= 5 && t[4].rows.size() == 4) {
+        const std::vector<Row>& below = t[4].rows;  // thesis grid then 0.5 m, eyes (0, 0, -3) and (6, 0, -2)
+        md << "- **From under the water the same construction holds with the indices swapped.** With 0.5 m facets "
+              "and the eye 3 m under the centre, the points above the water seen through Snell's window are placed "
+           << number(below[2].linear.mean) << " m off on average (" << number(below[2].solved.mean)
+           << " solved; the thesis's grid spacing: " << number(below[0].linear.mean) << "). "
+           << number(seenShare(below[2].linear, below[2].linear.extrapolated), "%.0f")
+           << "% of the points in some cell are in one bounded by an extrapolated ray (beyond the window, where "
+              "the real light is totally reflected): the thesis's extrapolation keeps those facets drawable, "
+              "not right.\n";
+    }
     md << "\n";
     return md.str();
 }
 
 } // namespace
+
+Table underwaterWaveTable(const osgWater::WaterSurface& surface, double gridSpacing, const ExperimentOptions& options)
+{
+    Table table;
+    table.title = "The lake's waves from under the water";
+    table.caption = "The same patch seen from below: indices 1.333 at the eye and 1.0 beyond, the points in a "
+                    "24 x 24 x 6 m box above the level; metres. Beyond Snell's window (48.6 degrees from the "
+                    "vertical) the sight rays are totally reflected and the cells are bounded by the thesis's "
+                    "extrapolated rays (left out of the error, counted in the last column).";
+    table.columns[0] = "facet spacing (m)";
+    table.columns[1] = "eye (m)";
+    const glm::dvec3 eyes[2] = {{0, 0, -3}, {6, 0, -2}};
+    const double spacings[2] = {gridSpacing, 0.5};
+    Box box;
+    box.min = glm::dvec3(-12.0, -12.0, 0.0);
+    box.max = glm::dvec3(12.0, 12.0, 6.0);
+    box.perAxis = options.lakePerAxis;
+    const Medium water{1.333, 1.0};
+    for (double spacing : spacings) {
+        const std::unique_ptr<Refractor> patch = makeWavePatch(surface, 0.0, glm::dvec2(0.0), 12.0, spacing, true);
+        for (const glm::dvec3& eye : eyes) {
+            Row row = measureRow(*patch, eye, water, box);
+            row.label[0] = number(spacing, "%.2f");
+            row.label[1] = "(" + number(eye.x, "%.0f") + ", " + number(eye.y, "%.0f") + ", " + number(eye.z, "%.1f") + ")";
+            table.rows.push_back(row);
+        }
+    }
+    return table;
+}
 
 std::string markdown(const std::vector<Table>& tables, const ExperimentOptions& options, const std::string& command,
                      const std::string& date)

@@ -42,9 +42,13 @@ Table facetingTable(const ExperimentOptions& options);
 //! The lake: a 24 m square of `surface`'s waves at t = 0 about (0, 0), faceted at the default grid's
 //! spacing and at 0.5 m, indices 1.0 / 1.333, a 24 x 24 x 6 m box under it, eyes above and off the centre.
 Table waveTable(const osgWater::WaterSurface& surface, double gridSpacing, const ExperimentOptions& options);
+//! The same patch seen from under the water (the indices swapped: 1.333 at the eye, 1.0 beyond), the
+//! eye 3 m down under the centre and 2 m down 6 m off it, the points in a 24 x 24 x 6 m box above.
+Table underwaterWaveTable(const osgWater::WaterSurface& surface, double gridSpacing, const ExperimentOptions& options);
 
 //! The tables as Markdown (VIRTUAL_VERTICES.md), with how they were made and what they show; the
-//! tables in the order eyePositionTable, sphereTable, facetingTable, then waveTable if measured.
+//! tables in the order eyePositionTable, sphereTable, facetingTable, then waveTable and
+//! underwaterWaveTable if measured.
 std::string markdown(const std::vector<Table>& tables, const ExperimentOptions& options, const std::string& command,
                      const std::string& date);
 

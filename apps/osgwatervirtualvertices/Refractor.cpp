@@ -88,8 +88,9 @@ private:
 
 class WavePatch : public Refractor {
 public:
-    WavePatch(const osgWater::WaterSurface& surface, double t, const glm::dvec2& centre, double halfSide, double spacing)
-        : _surface(surface), _t(t), _min(centre - halfSide), _max(centre + halfSide)
+    WavePatch(const osgWater::WaterSurface& surface, double t, const glm::dvec2& centre, double halfSide, double spacing,
+              bool fromBelow)
+        : _surface(surface), _t(t), _min(centre - halfSide), _max(centre + halfSide), _side(fromBelow ? -1.0 : 1.0)
     {
         const int cells = std::max(1, int(std::ceil(2.0 * halfSide / spacing)));
         const double step = 2.0 * halfSide / cells;
@@ -98,7 +99,7 @@ public:
                 const double x = _min.x + i * step, y = _min.y + j * step;
                 _membrane.positions.push_back(glm::dvec3(x, y, surface.height(x, y, t)));
                 const osg::Vec3d n = surface.normal(x, y, t);
-                _membrane.normals.push_back(glm::dvec3(n.x(), n.y(), n.z()));
+                _membrane.normals.push_back(_side * glm::dvec3(n.x(), n.y(), n.z()));
             }
         for (int j = 0; j < cells; ++j)
             for (int i = 0; i < cells; ++i) {
@@ -118,16 +119,17 @@ public:
         if (!_surface.intersect(start, end, _t, ratio, point, normal)) return false;
         p = glm::dvec3(point.x(), point.y(), point.z());
         const osg::Vec3d up = _surface.normal(point.x(), point.y(), _t);
-        n = glm::dvec3(up.x(), up.y(), up.z());
+        n = _side * glm::dvec3(up.x(), up.y(), up.z());
         return p.x >= _min.x && p.x <= _max.x && p.y >= _min.y && p.y <= _max.y;
     }
 
-    bool beyond(const glm::dvec3& p) const override { return p.z < _surface.height(p.x, p.y, _t); }
+    bool beyond(const glm::dvec3& p) const override { return _side * (p.z - _surface.height(p.x, p.y, _t)) < 0.0; }
 
 private:
     const osgWater::WaterSurface& _surface;
     double _t;
     glm::dvec2 _min, _max;
+    double _side;  // +1 seen from above, -1 from below
 };
 
 } // namespace
@@ -138,9 +140,9 @@ std::unique_ptr<Refractor> makeDisk(double radius, int rings, double sphereRadiu
 }
 
 std::unique_ptr<Refractor> makeWavePatch(const osgWater::WaterSurface& surface, double t, const glm::dvec2& centre,
-                                         double halfSide, double spacing)
+                                         double halfSide, double spacing, bool fromBelow)
 {
-    return std::unique_ptr<Refractor>(new WavePatch(surface, t, centre, halfSide, spacing));
+    return std::unique_ptr<Refractor>(new WavePatch(surface, t, centre, halfSide, spacing, fromBelow));
 }
 
 }

@@ -32,7 +32,8 @@ std::unique_ptr<Refractor> makeDisk(double radius, int rings, double sphereRadiu
 
 //! A square patch of water waves at time t (the surface's analytic sum): centre, half side, the
 //! facets' spacing; the vertices and normals on the analytic surface, as a drawn grid has them.
+//! `fromBelow`: seen by an eye under the water (normals down, the refracting medium the air above).
 std::unique_ptr<Refractor> makeWavePatch(const osgWater::WaterSurface& surface, double t, const glm::dvec2& centre,
-                                         double halfSide, double spacing);
+                                         double halfSide, double spacing, bool fromBelow = false);
 
 }

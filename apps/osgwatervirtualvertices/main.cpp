@@ -67,6 +67,7 @@ int main(int argc, char** argv)
         // the thesis's uniform grid (MESH_GRID): resolution vertices over the square
         const double spacing = surface->getSize() / std::max(1.0, double(surface->getResolution()) - 1.0);
         tables.push_back(vv::waveTable(*surface, spacing, options));
+        tables.push_back(vv::underwaterWaveTable(*surface, spacing, options));
     }
 
     const std::string md = vv::markdown(tables, options, command, osgWaterApps::today());
