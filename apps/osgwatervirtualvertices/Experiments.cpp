@@ -16,14 +16,19 @@ const double kRadius = 142.0;  // the thesis's refractor
 const int kRings = 11;         // 4 * 11^2 = 484 facets
 const Medium kGlass{1.0, 1.51};
 
-Row measureRow(const Refractor& refractor, const glm::dvec3& eye, const Medium& medium, const Box& box)
+//! Measures one row (both placements) and adds it to the table.
+void addRow(Table& table, const Refractor& refractor, const glm::dvec3& eye, const Medium& medium, const Box& box,
+            const std::string& label0, const std::string& label1, const Published& thesis = Published())
 {
     Row row;
     const auto start = std::chrono::steady_clock::now();
     row.linear = measureErrorVolume(refractor, eye, medium, box, SightPoint::Linear);
     row.solved = measureErrorVolume(refractor, eye, medium, box, SightPoint::Solved);
     row.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    return row;
+    row.label[0] = label0;
+    row.label[1] = label1;
+    row.thesis = thesis;
+    table.rows.push_back(row);
 }
 
 std::string number(double v, const char* format = "%.4g")
@@ -45,6 +50,20 @@ std::string published(const Published& p)
     return number(p.mean) + " | " + number(p.deviation) + " | " + std::to_string(p.points);
 }
 
+//! The lake's rows: a 24 m patch of the waves about (0, 0) at each spacing, seen from each eye.
+void addWaveRows(Table& table, const osgWater::WaterSurface& surface, const double (&spacings)[2], const glm::dvec3* eyes,
+                 int eyeCount, const Medium& medium, const Box& box, bool fromBelow)
+{
+    for (double spacing : spacings) {
+        const std::unique_ptr<Refractor> patch = makeWavePatch(surface, 0.0, glm::dvec2(0.0), 12.0, spacing, fromBelow);
+        for (int i = 0; i < eyeCount; ++i) {
+            const glm::dvec3& eye = eyes[i];
+            addRow(table, *patch, eye, medium, box, number(spacing, "%.2f"),
+                   "(" + number(eye.x, "%.0f") + ", " + number(eye.y, "%.0f") + ", " + number(eye.z, "%.1f") + ")");
+        }
+    }
+}
+
 } // namespace
 
 Table eyePositionTable(const ExperimentOptions& options)
@@ -63,13 +82,9 @@ Table eyePositionTable(const ExperimentOptions& options)
     Box box;
     box.perAxis = options.perAxis;
     for (int h = 0; h < 3; ++h)
-        for (int d = 0; d < 4; ++d) {
-            Row row = measureRow(*flat, glm::dvec3(shifts[d], 0.0, heights[h]), kGlass, box);
-            row.label[0] = number(heights[h], "%.0f");
-            row.label[1] = number(shifts[d], "%.0f");
-            row.thesis = thesis[h][d];
-            table.rows.push_back(row);
-        }
+        for (int d = 0; d < 4; ++d)
+            addRow(table, *flat, glm::dvec3(shifts[d], 0.0, heights[h]), kGlass, box, number(heights[h], "%.0f"),
+                   number(shifts[d], "%.0f"), thesis[h][d]);
     return table;
 }
 
@@ -89,11 +104,8 @@ Table sphereTable(const ExperimentOptions& options)
     box.perAxis = options.perAxis;
     for (int i = 0; i < 6; ++i) {
         const std::unique_ptr<Refractor> bowl = makeDisk(kRadius, kRings, radii[i]);
-        Row row = measureRow(*bowl, glm::dvec3(0.0, 0.0, 450.0), kGlass, box);
-        row.label[0] = std::isfinite(radii[i]) ? number(radii[i], "%.0f") : "∞ (flat)";
-        row.label[1] = "450";
-        row.thesis = thesis[i];
-        table.rows.push_back(row);
+        addRow(table, *bowl, glm::dvec3(0.0, 0.0, 450.0), kGlass, box,
+               std::isfinite(radii[i]) ? number(radii[i], "%.0f") : "∞ (flat)", "450", thesis[i]);
     }
     return table;
 }
@@ -111,14 +123,10 @@ Table facetingTable(const ExperimentOptions& options)
     box.perAxis = options.perAxis;
     for (int rings : {7, 11, 15}) {
         const std::unique_ptr<Refractor> flat = makeDisk(kRadius, rings, std::numeric_limits<double>::infinity());
-        for (const auto& eye : eyes) {
-            Row row = measureRow(*flat, glm::dvec3(0.0, 0.0, eye.first), kGlass, box);
-            row.label[0] = std::to_string(flat->membrane().facets.size()) + " (" +
-                           std::to_string(flat->membrane().positions.size()) + ")";
-            row.label[1] = number(eye.first, "%.0f");
-            row.thesis = eye.second;
-            table.rows.push_back(row);
-        }
+        const std::string facets = std::to_string(flat->membrane().facets.size()) + " (" +
+                                   std::to_string(flat->membrane().positions.size()) + ")";
+        for (const auto& eye : eyes)
+            addRow(table, *flat, glm::dvec3(0.0, 0.0, eye.first), kGlass, box, facets, number(eye.first, "%.0f"), eye.second);
     }
     return table;
 }
@@ -139,15 +147,7 @@ Table waveTable(const osgWater::WaterSurface& surface, double gridSpacing, const
     box.max = glm::dvec3(12.0, 12.0, 0.0);
     box.perAxis = options.lakePerAxis;
     const Medium water{1.0, 1.333};
-    for (double spacing : spacings) {
-        const std::unique_ptr<Refractor> patch = makeWavePatch(surface, 0.0, glm::dvec2(0.0), 12.0, spacing);
-        for (const glm::dvec3& eye : eyes) {
-            Row row = measureRow(*patch, eye, water, box);
-            row.label[0] = number(spacing, "%.2f");
-            row.label[1] = "(" + number(eye.x, "%.0f") + ", " + number(eye.y, "%.0f") + ", " + number(eye.z, "%.1f") + ")";
-            table.rows.push_back(row);
-        }
-    }
+    addWaveRows(table, surface, spacings, eyes, 4, water, box, false);
     return table;
 }
 
@@ -245,15 +245,7 @@ Table underwaterWaveTable(const osgWater::WaterSurface& surface, double gridSpac
     box.max = glm::dvec3(12.0, 12.0, 6.0);
     box.perAxis = options.lakePerAxis;
     const Medium water{1.333, 1.0};
-    for (double spacing : spacings) {
-        const std::unique_ptr<Refractor> patch = makeWavePatch(surface, 0.0, glm::dvec2(0.0), 12.0, spacing, true);
-        for (const glm::dvec3& eye : eyes) {
-            Row row = measureRow(*patch, eye, water, box);
-            row.label[0] = number(spacing, "%.2f");
-            row.label[1] = "(" + number(eye.x, "%.0f") + ", " + number(eye.y, "%.0f") + ", " + number(eye.z, "%.1f") + ")";
-            table.rows.push_back(row);
-        }
-    }
+    addWaveRows(table, surface, spacings, eyes, 2, water, box, true);
     return table;
 }
 
