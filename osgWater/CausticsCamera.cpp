@@ -68,7 +68,7 @@ CausticsCamera::CausticsCamera(osg::Group* scene, osg::StateSet* sceneState, osg
     }
 
     _photons = new PhotonCamera(waterState, gridSize, floatTargets);
-    _gather = new PhotonGather(_photons->getPhotonTexture(), gridSize, resolution, floatTargets);
+    _gather = new PhotonGather(_photons->getPhotonTexture(), gridSize, resolution, floatTargets, waterState);
     _lighting.caustics = _gather->getCausticsTexture();
     _lighting.depth = _depth;
     _timer = new GpuTimer;
@@ -219,6 +219,9 @@ void CausticsCamera::update(const Frame& f)
     } else {
         _photons->setSun(f.surface, sun, proj, _depth.get(), _reflected ? &mirror : nullptr);
         if (_shade.valid()) _photons->setSunShade(_shade->getDepthTexture(), shadeProj);
+        // the procedural caustics trace no photons: the photon pass stays, empty (no surface, no
+        // clear), only as the start of the caustics' GPU timer
+        _photons->setEmpty(!_reflected && f.settings->getCausticsMethod() == WaterSettings::CAUSTICS_PROCEDURAL);
     }
     _lighting.tiled = _tiled;
 
@@ -227,6 +230,9 @@ void CausticsCamera::update(const Frame& f)
     _window.set(r - l, t - b, fa - n);
     const double texel = std::max(r - l, t - b) / getGridSize();
     _lighting.localToSun = view * proj * clipToTexture(); // reflected: a fragment mirrored first
+    if (!_reflected && !_tiled)
+        _gather->setProceduralSun(osg::Matrixd::inverse(_lighting.localToSun), view, f.towardsSun, _depth.get(),
+                                  _shade.valid() ? _shade->getDepthTexture() : nullptr, shadeProj);
     _lighting.intensity = f.settings->getCausticsIntensity() * _gather->getValueScale();
     // the photons' green-channel fade is the others' too in the air
     // (a tile's photons carry no fade: the fragment's depth gives all of it)
@@ -298,8 +304,10 @@ WaterSettings::CausticsGather CausticsCamera::resolveGather(const WaterSettings&
                                                             const CausticsSupport& support)
 {
     const WaterSettings::CausticsGather wanted = settings.getCausticsGather();
-    // a tile is the area-ratio mesh's (photon splats would lose the light straddling its edges)
-    const WaterSettings::CausticsMethod method = _tiled ? WaterSettings::CAUSTICS_AREA_MESH : settings.getCausticsMethod();
+    // a tile is the area-ratio mesh's (photon splats would lose the light straddling its edges); the
+    // sun's reflection has no procedural construction: its photons stay
+    WaterSettings::CausticsMethod method = _tiled ? WaterSettings::CAUSTICS_AREA_MESH : settings.getCausticsMethod();
+    if (_reflected && method == WaterSettings::CAUSTICS_PROCEDURAL) method = WaterSettings::CAUSTICS_PHOTONS;
     if (_tiled && settings.getCausticsMethod() != method && !_saidTiledMesh) {
         _saidTiledMesh = true;
         OSG_NOTICE << "osgWater: tileable caustics are gathered by the area-ratio mesh" << std::endl;

@@ -79,3 +79,10 @@ void PhotonCamera::setTile(osg::Node* surface, const osg::Matrixd& view, const o
     setOrAddUniform(ss, "osgWater_TileBed", osg::Vec4f(planeToEye(osg::Vec4d(0.0, 0.0, 1.0, -bedZ), view)));
     setOrAddUniform(ss, "osgWater_EyeToTile", osg::Matrixf(osg::Matrixd::inverse(view) * localToTile));
 }
+
+void PhotonCamera::setEmpty(bool empty)
+{
+    _empty = empty;
+    _draw->setNode(0, empty ? nullptr : _surface.get());
+    setClearMask(empty ? 0u : GLbitfield(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT));
+}

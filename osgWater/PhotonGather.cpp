@@ -2,6 +2,9 @@
 #include <osgWater/PhotonSplat>
 #include <osgWater/Shaders>
 #include <osgWater/PassCamera>
+#include <osgWater/ProceduralCaustics>
+#include <osgWater/SceneLighting>
+#include <osgWater/ScreenTriangle>
 #include <osg/BlendFunc>
 #include <osg/buffered_value>
 #include <osg/Geometry>
@@ -142,9 +145,10 @@ osg::Geode* geodeOf(osg::Drawable* d)
 
 }
 
-PhotonGather::PhotonGather(osg::Texture2D* photons, int gridSize, int resolution, bool floatTarget)
+PhotonGather::PhotonGather(osg::Texture2D* photons, int gridSize, int resolution, bool floatTarget,
+                           osg::StateSet* waterState)
     : _method(WaterSettings::GATHER_AUTO), _causticsMethod(WaterSettings::CAUSTICS_PHOTONS), _grid(gridSize),
-      _resolution(resolution), _valueScale(floatTarget ? 1.0f : 16.0f), _photons(photons)
+      _resolution(resolution), _valueScale(floatTarget ? 1.0f : 16.0f), _photons(photons), _waterState(waterState)
 {
     setName("osgWater.PhotonGather");
     setUpPassTarget(this, resolution, resolution, PASS_GATHER);
@@ -172,6 +176,35 @@ PhotonGather::PhotonGather(osg::Texture2D* photons, int gridSize, int resolution
     ss->addUniform(new osg::Uniform("osgWater_PhotonGrid", float(gridSize)));
     ss->addUniform(new osg::Uniform("osgWater_GatherShift", osg::Vec3f(0.0f, 0.0f, 1.0f))); // one pass, unshifted
     // the paths are made when first chosen (setMethod()): nothing is drawn until then
+
+    // the procedural path's program and inputs (setProceduralSun() sets them every frame)
+    _proceduralState = new osg::StateSet;
+    _proceduralState->setName("osgWater.procedural");
+    _proceduralState->setDataVariance(osg::Object::DYNAMIC);
+    _proceduralState->setAttribute(createProgram("osgWater.procedural", "screen.vert", "procedural.frag"));
+    const procedural::SunHalo halo;
+    _proceduralState->addUniform(new osg::Uniform("osgWater_SunHalo", osg::Vec3f(float(halo.discRadius),
+                                                  float(halo.haloRadius), float(halo.haloLevel))));
+    _proceduralState->addUniform(new osg::Uniform("osgWater_ProceduralScale", 1.0f / _valueScale));
+    _proceduralState->addUniform(new osg::Uniform("osgWater_SunBedDepth", int(UNIT_PASS_INPUT)));
+}
+
+void PhotonGather::setProceduralSun(const osg::Matrixd& texToLocal, const osg::Matrixd& sunView,
+                                    const osg::Vec3& towardsSun, osg::Texture2D* sunDepth, osg::Texture2D* shade,
+                                    const osg::Matrixd& shadeProjection)
+{
+    osg::StateSet* ss = _proceduralState.get();
+    ss->setTextureAttribute(UNIT_PASS_INPUT, sunDepth);
+    setOrAddUniform(ss, "osgWater_SunTexToLocal", osg::Matrixf(texToLocal));
+    setOrAddUniform(ss, "osgWater_SunView", osg::Matrixf(sunView));
+    setOrAddUniform(ss, "osgWater_TowardsSunLocal", towardsSun);
+    setDefineIf(ss, "OSGWATER_PROCEDURAL_SHADE", shade != nullptr);
+    if (shade) {
+        ss->setTextureAttribute(UNIT_SUN_DEPTH, shade);
+        setOrAddUniform(ss, "osgWater_SunShade", int(UNIT_SUN_DEPTH));
+        setOrAddUniform(ss, "osgWater_SunShadeProj", osg::Matrixf(shadeProjection));
+        setOrAddUniform(ss, "osgWater_SunShadeInvProj", osg::Matrixf(osg::Matrixd::inverse(shadeProjection)));
+    }
 }
 
 osg::Group* PhotonGather::makePath(const PathKey& key)
@@ -183,6 +216,22 @@ osg::Group* PhotonGather::makePath(const PathKey& key)
     // a tile's samples reach both its edges (the surface repeats: the mesh closes on its neighbour's)
     const float spacing = float(_resolution) / float(tiled ? std::max(_grid - 1, 1) : _grid);
     const unsigned int n = unsigned(_grid) * unsigned(_grid);
+    if (method == WaterSettings::CAUSTICS_PROCEDURAL) {
+        // no photons: one triangle over the caustics texture, each texel traced back from its bed
+        // point, under the water's state (waves, indices, Fresnel, extinction)
+        osg::Group* path = new osg::Group;
+        path->setCullingActive(false);
+        osg::Group* water = new osg::Group;
+        water->setStateSet(_waterState);
+        water->setCullingActive(false);
+        osg::Geode* texels = makeScreenTriangle(0.0f, "osgWater.proceduralCaustics");
+        texels->setStateSet(_proceduralState.get());
+        water->addChild(texels);
+        path->addChild(water);
+        path->setNodeMask(0u);
+        addChild(path);
+        return path;
+    }
     osg::ref_ptr<osg::Drawable> draw;
     osg::ref_ptr<osg::StateSet> state = new osg::StateSet;
     switch (gather) {

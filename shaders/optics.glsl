@@ -279,3 +279,19 @@ owBottomHit owIterativeSearch(vec3 U, vec3 R, int steps, float tolerance)
     if (best.error > 1e29) best.error = 0.0;
     return best;
 }
+
+// A depth map read between its four texels around tc (the maps are filtered to the nearest texel: a
+// sloping surface read there moves by up to half a texel's rise); next to a texel the map leaves
+// clear (1: nothing there), the nearest texel.
+float owDepthBetweenTexels(sampler2D map, vec2 tc)
+{
+    vec2 size = vec2(textureSize(map, 0));
+    vec2 at = tc * size - 0.5, f = fract(at);
+    ivec2 i = ivec2(floor(at)), hi = ivec2(size) - 1;
+    vec4 d = vec4(texelFetch(map, clamp(i, ivec2(0), hi), 0).r,
+                  texelFetch(map, clamp(i + ivec2(1, 0), ivec2(0), hi), 0).r,
+                  texelFetch(map, clamp(i + ivec2(0, 1), ivec2(0), hi), 0).r,
+                  texelFetch(map, clamp(i + ivec2(1, 1), ivec2(0), hi), 0).r);
+    return max(max(d.x, d.y), max(d.z, d.w)) >= 1.0 ? texture(map, tc).r
+                                                    : mix(mix(d.x, d.y, f.x), mix(d.z, d.w, f.x), f.y);
+}

@@ -27,7 +27,6 @@ uniform float osgWater_PhotonExtinction; // the green channel's sun extinction (
 uniform float osgWater_FresnelQ;
 uniform int osgWater_SearchSteps;
 uniform float osgWater_SearchTolerance;
-const float kSunReachesTolerance = 0.005; // metres: well above the shade map's precision over its depth range
 #ifdef OSGWATER_REFLECTED_PHOTONS
 uniform mat4 osgWater_MirrorEye; // the mirror in the water plane, in this camera's eye space
 #endif
@@ -43,34 +42,7 @@ in vec3 vEye;
 in float vDrawnError;
 
 #if !defined(OSGWATER_TILED_PHOTONS) && !defined(OSGWATER_REFLECTED_PHOTONS)
-uniform sampler2D osgWater_SunShade;   // the whole scene's depth seen from the sun (unclipped)
-uniform mat4 osgWater_SunShadeProj;
-uniform mat4 osgWater_SunShadeInvProj;
-
-// Whether the sun's ray reaches the water at P (sun eye space) before the scene: the shade map (the
-// whole scene, so the shore in front of the water and the pier above it alike) read between its
-// four texels around P. Read at the nearest texel, the shore moves by up to half a texel's rise,
-// and a strip along the waterline is lit or dark by chance; between the texels a plane is exact
-// (the beach's caustics test: 4.7% from the photon reference read at the nearest texel with a 1 cm
-// tolerance, 4.0% read between). Next to a texel the map leaves clear (nothing there) the nearest
-// texel answers.
-bool owSunReaches(vec3 P)
-{
-    owDepthPass shade = owDepthPass(osgWater_SunShadeProj, osgWater_SunShadeInvProj, vec4(0.0, 0.0, 0.0, 1.0), false);
-    vec2 tc;
-    if (!owPassTexCoord(shade.proj, P, tc)) return true;
-    vec2 size = vec2(textureSize(osgWater_SunShade, 0));
-    vec2 at = tc * size - 0.5, f = fract(at);
-    ivec2 i = ivec2(floor(at)), hi = ivec2(size) - 1;
-    vec4 d = vec4(texelFetch(osgWater_SunShade, clamp(i, ivec2(0), hi), 0).r,
-                  texelFetch(osgWater_SunShade, clamp(i + ivec2(1, 0), ivec2(0), hi), 0).r,
-                  texelFetch(osgWater_SunShade, clamp(i + ivec2(0, 1), ivec2(0), hi), 0).r,
-                  texelFetch(osgWater_SunShade, clamp(i + ivec2(1, 1), ivec2(0), hi), 0).r);
-    float depth = max(max(d.x, d.y), max(d.z, d.w)) >= 1.0 ? texture(osgWater_SunShade, tc).r
-                                                            : mix(mix(d.x, d.y, f.x), mix(d.z, d.w, f.x), f.y);
-    if (depth >= 1.0) return true; // nothing on this ray
-    return !(owPassEyeZ(shade, tc, depth) > P.z + kSunReachesTolerance);
-}
+#pragma include "sunshade.glsl"
 #endif
 
 void main()

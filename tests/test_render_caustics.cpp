@@ -7,6 +7,8 @@
 #include "WarnCapture.h"
 #include <osgWater/WaterNode>
 #include <osgWater/Optics>
+#include <osgWater/ProceduralCaustics>
+#include <osgWater/WaterSurface>
 #include <osgWater/WaterTypes>
 #include <osg/Geometry>
 #include <osg/Material>
@@ -144,7 +146,9 @@ double value(const osg::Image* img, int i, int j) { return pixel(img, i, j)[0]; 
 
 std::string methodName(const testing::TestParamInfo<WaterSettings::CausticsMethod>& info)
 {
-    return info.param == WaterSettings::CAUSTICS_AREA_MESH ? "AreaMesh" : "Photons";
+    return info.param == WaterSettings::CAUSTICS_AREA_MESH   ? "AreaMesh"
+           : info.param == WaterSettings::CAUSTICS_PROCEDURAL ? "Procedural"
+                                                              : "Photons";
 }
 
 // Transmitted, attenuated irradiance under flat water of depth H, sun at cosine cosL (Schlick, q 5),
@@ -190,13 +194,18 @@ osg::ref_ptr<osg::Image> expectGatherPathsAgree(CausticsScene& sc)
 }
 
 class RenderCausticsMethod : public testing::TestWithParam<WaterSettings::CausticsMethod> {};
+// the methods calibrated to flat water: the photons' two and the procedural construction
+class RenderCausticsOnFlatWater : public testing::TestWithParam<WaterSettings::CausticsMethod> {};
 
 }
 
 INSTANTIATE_TEST_SUITE_P(Caustics, RenderCausticsMethod,
                          testing::Values(WaterSettings::CAUSTICS_PHOTONS, WaterSettings::CAUSTICS_AREA_MESH), methodName);
+INSTANTIATE_TEST_SUITE_P(Caustics, RenderCausticsOnFlatWater,
+                         testing::Values(WaterSettings::CAUSTICS_PHOTONS, WaterSettings::CAUSTICS_AREA_MESH,
+                                         WaterSettings::CAUSTICS_PROCEDURAL), methodName);
 
-TEST_P(RenderCausticsMethod, FlatWaterGivesTheTransmittedIrradianceEverywhere)
+TEST_P(RenderCausticsOnFlatWater, FlatWaterGivesTheTransmittedIrradianceEverywhere)
 {
     for (const osg::Vec3 sun : { osg::Vec3(0, 0, 1), osg::Vec3(0.3f, 0.2f, 0.93f) }) {
         CausticsScene sc(20.0f, 64, 128, sun, -2.0f);
@@ -223,6 +232,52 @@ TEST_P(RenderCausticsMethod, FlatWaterGivesTheTransmittedIrradianceEverywhere)
         const double mean = sum / n;
         EXPECT_NEAR(mean, expected, 0.02 * expected) << "sun " << L;
         EXPECT_LE(hi - lo, 0.02 * mean) << "sun " << L << ": min " << lo << " max " << hi;
+    }
+}
+
+TEST(RenderCaustics, ProceduralCausticsOverASineWaveAreTheirCpuMirrorsTexelByTexel)
+{
+    // one 2 m wave, 3 cm high, over a bed 2 m down; 3 cm texels. Each texel against the CPU
+    // construction at its own bed point (osgWater/ProceduralCaustics, double precision): the lines
+    // must be where the construction puts them, not just as bright on average
+    for (const osg::Vec3 sun : { osg::Vec3(0, 0, 1), osg::Vec3(0.5f, 0.2f, 0.85f) }) {
+        CausticsScene sc(8.0f, 256, 64, sun, -2.0f);
+        REQUIRE_GL(sc.h);
+        Wave w;
+        w.direction.set(1.0f, 0.0f);
+        w.wavelength = 2.0f;
+        w.amplitude = 0.03f;
+        sc.water->getSurface()->setWaves({ w });
+        sc.water->getSettings()->setCausticsMethod(WaterSettings::CAUSTICS_PROCEDURAL);
+        osg::ref_ptr<osg::Image> img = sc.render();
+        ASSERT_TRUE(img.valid()) << "no caustics pass ran";
+        osg::Vec3 L = sun;
+        L.normalize();
+        const glm::dvec3 towardsSun(L.x(), L.y(), L.z());
+        const double transmitted = 1.0 - optics::fresnelSchlick(L.z(), optics::normalReflectance(1.0f, 1.333f), 5.0f);
+        const double flat = flatIrradiance(L.z(), 2.0); // the sun's disc seen straight through flat water
+        int n = 0, off = 0, litGpu = 0, litCpu = 0;
+        double worst = 0.0;
+        for (int j = 8; j < img->t() - 8; ++j)
+            for (int i = 8; i < img->s() - 8; ++i) {
+                const osg::Vec3d p = sc.bedPoint(img.get(), i, j);
+                if (std::fabs(p.x()) > 3 || std::fabs(p.y()) > 3) continue; // the backward ray stays on the water
+                const procedural::Backtrace tr = procedural::backtrace(glm::dvec3(p.x(), p.y(), p.z()), towardsSun,
+                                                                       *sc.water->getSurface(), 1.0, 1.0, 1.333);
+                const double cpu = procedural::causticLight(tr, transmitted, kK);
+                const double gpu = value(img.get(), i, j);
+                ++n;
+                litGpu += gpu > 0.5 * flat;
+                litCpu += cpu > 0.5 * flat;
+                // at the disc's rim the light steps from 1 to the halo's quarter: a texel there may
+                // fall either side in float
+                if (std::fabs(gpu - cpu) > 0.02) ++off;
+                worst = std::max(worst, std::fabs(gpu - cpu));
+            }
+        ASSERT_GT(n, 10000);
+        EXPECT_GT(litCpu, n / 100) << "the construction lights lines";
+        EXPECT_NEAR(litGpu, litCpu, 0.02 * n + 1) << "sun " << L;
+        EXPECT_LT(off, n / 50) << "sun " << L << ": " << off << " of " << n << " texels off by over 0.02 (worst " << worst << ")";
     }
 }
 

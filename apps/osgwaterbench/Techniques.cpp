@@ -49,6 +49,7 @@ std::vector<Technique> allTechniques()
     // a quarter of the photons (the lake's: one per caustics texel against its settings' four)
     t.push_back({ "caustics-photons-halved", [](WaterSettings& s) { s.setPhotonGridSize(s.getPhotonGridSize() / 2); } });
     t.push_back({ "caustics-mesh", [](WaterSettings& s) { s.setCausticsMethod(WaterSettings::CAUSTICS_AREA_MESH); } });
+    t.push_back({ "caustics-procedural", [](WaterSettings& s) { s.setCausticsMethod(WaterSettings::CAUSTICS_PROCEDURAL); } });
     t.push_back({ "caustics-mesh-supersampled", [](WaterSettings& s) {
                      s.setCausticsMethod(WaterSettings::CAUSTICS_AREA_MESH);
                      s.setCausticsSupersampling(true);

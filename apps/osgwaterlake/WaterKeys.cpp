@@ -44,9 +44,8 @@ bool WaterKeys::handle(const osgGA::GUIEventAdapter& ea, osgGA::GUIActionAdapter
     case 'g': // auto -> copy -> texture -> cpu -> auto
         s.setCausticsGather(WaterSettings::CausticsGather((int(s.getCausticsGather()) + 1) % 4));
         return true;
-    case 'a':
-        s.setCausticsMethod(s.getCausticsMethod() == WaterSettings::CAUSTICS_PHOTONS ? WaterSettings::CAUSTICS_AREA_MESH
-                                                                                   : WaterSettings::CAUSTICS_PHOTONS);
+    case 'a': // photons -> area-ratio mesh -> procedural -> photons
+        s.setCausticsMethod(WaterSettings::CausticsMethod((int(s.getCausticsMethod()) + 1) % 3));
         return true;
     case 'x': s.setCausticsSupersampling(!s.getCausticsSupersampling()); return true;
     case 'y': s.setReflectiveCaustics(!s.getReflectiveCaustics()); return true;
