@@ -219,10 +219,10 @@ void CausticsCamera::update(const Frame& f)
     } else {
         _photons->setSun(f.surface, sun, proj, _depth.get(), _reflected ? &mirror : nullptr);
         if (_shade.valid()) _photons->setSunShade(_shade->getDepthTexture(), shadeProj);
-        // the procedural caustics trace no photons: the photon pass stays, empty (no surface, no
-        // clear), only as the start of the caustics' GPU timer
-        _photons->setEmpty(!_reflected && f.settings->getCausticsMethod() == WaterSettings::CAUSTICS_PROCEDURAL);
     }
+    // the procedural caustics trace no photons (a tile's and the sun's reflection keep theirs): the
+    // photon pass stays, empty (no surface, no clear), only as the start of the caustics' GPU timer
+    _photons->setEmpty(!_reflected && !_tiled && f.settings->getCausticsMethod() == WaterSettings::CAUSTICS_PROCEDURAL);
     _lighting.tiled = _tiled;
 
     double l, r, b, t, n, fa;

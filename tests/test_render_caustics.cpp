@@ -281,6 +281,34 @@ TEST(RenderCaustics, ProceduralCausticsOverASineWaveAreTheirCpuMirrorsTexelByTex
     }
 }
 
+TEST(RenderCaustics, ProceduralCausticsGiveTheirPhotonsBackToATileAndToTheSunsReflection)
+{
+    // procedural caustics empty the photon pass; tiled after them, the tile's photons are drawn again
+    // (flat water: 1 - F in every texel of the tile), and the reflective caustics keep theirs
+    const osg::Vec3 sun(0.3f, 0.2f, 0.93f);
+    osg::Vec3 L = sun;
+    L.normalize();
+    const double transmitted = 1.0 - optics::fresnelSchlick(L.z(), optics::normalReflectance(1.0f, 1.333f), 5.0f);
+    CausticsScene sc(20.0f, 32, 128, sun, -2.0f);
+    REQUIRE_GL(sc.h);
+    WaterSettings* s = sc.water->getSettings();
+    s->setCausticsMethod(WaterSettings::CAUSTICS_PROCEDURAL);
+    s->setReflectiveCaustics(true);
+    sc.water->addChild(litQuad(-1, -1, 1, 1, 1.0f)); // something above the water for the sun's reflection
+    ASSERT_TRUE(sc.render().valid());
+    EXPECT_TRUE(sc.water->getCausticsCamera()->getPhotonCamera()->isEmpty());
+    ASSERT_TRUE(sc.water->getReflectedCausticsCamera() != nullptr);
+    EXPECT_FALSE(sc.water->getReflectedCausticsCamera()->getPhotonCamera()->isEmpty());
+    EXPECT_EQ(sc.water->getReflectedCausticsCamera()->getGather()->getCausticsMethod(), WaterSettings::CAUSTICS_PHOTONS);
+    s->setCausticsTileSize(4.0f);
+    osg::ref_ptr<osg::Image> img = sc.render();
+    ASSERT_TRUE(img.valid());
+    EXPECT_FALSE(sc.water->getCausticsCamera()->getPhotonCamera()->isEmpty());
+    for (int j = 0; j < img->t(); ++j)
+        for (int i = 0; i < img->s(); ++i)
+            ASSERT_NEAR(value(img.get(), i, j), transmitted, 0.02 * transmitted) << i << ", " << j;
+}
+
 TEST(RenderCaustics, FocusedOnTheLitWaterTheyKeepTheirSpacingWithFewerPhotons)
 {
     // flat water over a bed at -2 m in a hole [-4, 4]^2 of a shore 1 m above the water, a floor at
