@@ -230,7 +230,7 @@ void CausticsCamera::update(const Frame& f)
     _window.set(r - l, t - b, fa - n);
     const double texel = std::max(r - l, t - b) / getGridSize();
     _lighting.localToSun = view * proj * clipToTexture(); // reflected: a fragment mirrored first
-    if (!_reflected && !_tiled)
+    if (!_reflected && !_tiled && f.settings->getCausticsMethod() == WaterSettings::CAUSTICS_PROCEDURAL)
         _gather->setProceduralSun(osg::Matrixd::inverse(_lighting.localToSun), view, f.towardsSun, _depth.get(),
                                   _shade.valid() ? _shade->getDepthTexture() : nullptr, shadeProj);
     _lighting.intensity = f.settings->getCausticsIntensity() * _gather->getValueScale();

@@ -286,7 +286,10 @@ void PhotonGather::setMethod(WaterSettings::CausticsGather gather, WaterSettings
     _tiled = tiled;
     // the splat program's variants of the paths tried before are not needed any more
     getStateSet()->getAttribute(osg::StateAttribute::PROGRAM)->releaseGLObjects(nullptr);
-    const PathKey wanted(gather, method, supersampled, tiled);
+    // the procedural path reads no photons: one path whatever the gather way (the automatic choice's
+    // trials would otherwise make three alike)
+    const PathKey wanted(method == WaterSettings::CAUSTICS_PROCEDURAL ? WaterSettings::GATHER_AUTO : gather, method,
+                         supersampled, tiled);
     if (gather != WaterSettings::GATHER_AUTO && !_paths.count(wanted)) _paths[wanted] = makePath(wanted);
     for (const auto& p : _paths) {
         osg::Group* path = p.second.get();
