@@ -40,6 +40,8 @@ TEST(ProceduralCaustics, TheSunAndHaloMapIsOneOnTheDiscAndFadesToNothingAtTenTim
     EXPECT_EQ(sunHalo(0.0, map), 1.0);
     EXPECT_EQ(sunHalo(0.99 * map.discRadius, map), 1.0);
     EXPECT_EQ(sunHalo(map.haloRadius, map), 0.0);
+    EXPECT_EQ(sunHalo(1.5 * map.haloRadius, map), 0.0);  // and dark beyond it, to the horizon
+    EXPECT_EQ(sunHalo(1.5, map), 0.0);
     double previous = sunHalo(1.001 * map.discRadius, map);
     EXPECT_NEAR(previous, map.haloLevel, 0.01);
     for (double a = 1.1 * map.discRadius; a < map.haloRadius; a += 0.1 * map.discRadius) {
