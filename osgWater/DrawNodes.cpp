@@ -42,7 +42,9 @@ void DrawNodes::operator()(osg::Node*, osg::NodeVisitor* nv)
 {
     osgUtil::CullVisitor* cv = nv->asCullVisitor();
     if (!cv) return;
-    if (_cullByPlane) cv->getCurrentCullingSet().getFrustum().add(_plane);
+    osg::Polytope& frustum = cv->getCurrentCullingSet().getFrustum();
+    if (!_cullByFrustum) frustum.set(osg::Polytope::PlaneList()); // this traversal's own culling set
+    if (_cullByPlane) frustum.add(_plane);
     for (const Draw& d : _draws) {
         for (const osg::ref_ptr<osg::StateSet>& ss : d.states) cv->pushStateSet(ss.get());
         if (d.childrenOf) d.childrenOf->osg::Group::traverse(*nv);

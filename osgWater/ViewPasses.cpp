@@ -100,6 +100,9 @@ void ViewPasses::update(const PassContext& ctx, const PassPlan& plan, const Scen
         else l.reflectedCaustics = nullptr; // from above it sees the underwater scene
         _refraction->update(ctx);
         _refraction->applyLighting(l);
+        // the debug output's true places replace the colour target while it is on
+        if (_waterInputs->getTextureAttribute(UNIT_REFRACTION, osg::StateAttribute::TEXTURE) != _refraction->getColorTexture())
+            _waterInputs->setTextureAttribute(UNIT_REFRACTION, _refraction->getColorTexture());
     }
     if (!plan.runs(PASS_SURFACE) && !plan.runs(PASS_CAP)) return; // the water inputs are read by nothing
 

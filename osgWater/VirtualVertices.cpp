@@ -1,4 +1,5 @@
 #include <osgWater/VirtualVertices>
+#include <osgWater/WaterSurface>
 #include <algorithm>
 #include <cmath>
 
@@ -147,6 +148,13 @@ Cells buildCells(const Membrane& membrane, const glm::dvec3& eye, double nEye, d
         cells.rays.push_back(refractionRay(unitOr(membrane.positions[i] - eye, -N), N, cells.eta));
     }
     return cells;
+}
+
+double membraneCellSize(const WaterSurface& surface)
+{
+    double cell = surface.getSize() / double(std::max(surface.getResolution(), 2u) - 1);
+    for (const Wave& w : surface.getWaves()) cell = std::min(cell, double(w.wavelength) / 8.0);
+    return cell;
 }
 
 glm::dvec3 foreshortened(const glm::dvec3& eye, const glm::dvec3& S, const glm::dvec3& T, double eta)

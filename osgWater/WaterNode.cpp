@@ -337,6 +337,7 @@ WaterNode::ViewFrame WaterNode::gatherFacts(osgUtil::CullVisitor& cv)
     ctx.clearance = clearance();
     ctx.clearColor = camera->getClearColor();
     ctx.settings = &s;
+    ctx.truePositions = _debug == DEBUG_BOTTOM_HIT;
     warnIfScaledUnevenly(ctx.view);
     const osg::Vec3d eye = eyePosition(ctx.view);
     const double eyeHeight = eyeHeightAboveSurface(eye, t);

@@ -119,7 +119,7 @@ void WaterSettings::setAbsorption(const osg::Vec3& a) { _absorption = clampColor
 void WaterSettings::setScattering(const osg::Vec3& b) { _scattering = clampColor("scattering", b, defaultScattering(), 100.0f); touch(); }
 void WaterSettings::setBackscattering(const osg::Vec3& bb) { _backscattering = clampColor("backscattering", bb, defaultBackscattering(), 100.0f); touch(); }
 void WaterSettings::setFresnelModel(FresnelModel m) { _fresnelModel = validEnum("fresnelModel", m, FRESNEL_RECIPROCAL, FRESNEL_SCHLICK); touch(); }
-void WaterSettings::setRefractionLookup(RefractionLookup l) { _refractionLookup = validEnum("refractionLookup", l, BRACKETED, ITERATIVE); touch(); }
+void WaterSettings::setRefractionLookup(RefractionLookup l) { _refractionLookup = validEnum("refractionLookup", l, VIRTUAL_VERTICES, ITERATIVE); touch(); }
 void WaterSettings::setReflectionLookup(ReflectionLookup l) { _reflectionLookup = validEnum("reflectionLookup", l, REFLECTION_SEARCH, REFLECTION_SEARCH); touch(); }
 void WaterSettings::setReflectionPlaneHeight(float m) { _reflectionPlaneHeight = clampOr("reflectionPlaneHeight", m, 0.0f, 10000.0f, 0.0f); touch(); }
 void WaterSettings::setRefractionPlaneDepth(float m) { _refractionPlaneDepth = clampOr("refractionPlaneDepth", m, 0.0f, 10000.0f, 0.0f); touch(); }
@@ -136,7 +136,7 @@ void WaterSettings::setFresnelReciprocalPower(float p) { _fresnelReciprocalPower
 namespace {
 // each enum's names in its values' order: one table per enum, read both ways
 const char* const kFresnelNames[] = { "schlick", "power", "exact", "reciprocal" };
-const char* const kRefractionLookupNames[] = { "one-step", "iterative", "plane", "bracketed" };
+const char* const kRefractionLookupNames[] = { "one-step", "iterative", "plane", "bracketed", "virtual-vertices" };
 const char* const kReflectionLookupNames[] = { "offset", "plane", "search" };
 const char* const kUnderwaterModelNames[] = { "physical", "thesis" };
 const char* const kCausticsGatherNames[] = { "auto", "copy", "texture", "cpu" };

@@ -74,6 +74,7 @@ REGISTER_OBJECT_WRAPPER(osgWater_WaterSettings, new osgWater::WaterSettings, osg
         ADD_ENUM_VALUE(ITERATIVE);
         ADD_ENUM_VALUE(PLANE_OFFSET);
         ADD_ENUM_VALUE(BRACKETED);
+        ADD_ENUM_VALUE(VIRTUAL_VERTICES);
     END_ENUM_SERIALIZER();
     ADD_PRECISE_FLOAT_SERIALIZER(RefractionPlaneDepth, 0.0f);
     ADD_INT_SERIALIZER(SearchSteps, 3);

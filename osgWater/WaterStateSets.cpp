@@ -5,6 +5,7 @@
 #include <osgWater/PassTable>
 #include <osgWater/PassCamera>
 #include <osgWater/SceneLighting>
+#include <osgWater/VirtualVertices>
 #include <osg/Material>
 #include <osg/Texture2D>
 #include <osg/Image>
@@ -72,6 +73,10 @@ WaterStateSets::WaterStateSets()
     _water->addUniform(new osg::Uniform("osgWater_SearchSteps", 3));
     _water->addUniform(new osg::Uniform("osgWater_IOR", osg::Vec2f(1.0f, 1.333f)));
     _water->addUniform(new osg::Uniform("osgWater_OneStep", osg::Vec2f(1.0f, 20.0f)));
+    // the refraction pass's virtual vertices follow the waves: the scene program shares their inputs
+    for (const char* u : { "osgWater_Waves", "osgWater_WavePhases", "osgWater_WaveCount", "osgWater_Level", "osgWater_IOR" })
+        _scene->addUniform(_water->getUniform(u));
+    _scene->addUniform(new osg::Uniform("osgWater_MembraneCell", 1.0f));
     _water->addUniform(new osg::Uniform("osgWater_LookupPlanes", osg::Vec2f(1.0f, 1.0f)));
     _water->addUniform(new osg::Uniform("osgWater_WaterColor", osg::Vec3f()));
     _water->addUniform(new osg::Uniform("osgWater_SurfaceSquare", osg::Vec4f()));
@@ -90,6 +95,7 @@ void WaterStateSets::applySettings(const WaterSettings& s, const WaterSurface& s
 {
     _scene->getUniform("osgWater_SunColor")->set(s.getSunColor());
     _scene->getUniform("osgWater_Ambient")->set(s.getAmbientColor());
+    _scene->getUniform("osgWater_MembraneCell")->set(float(virtualvertices::membraneCellSize(surface)));
 
     osg::StateSet* w = _water.get();
     w->getUniform("osgWater_IOR")->set(osg::Vec2f(s.getAirIOR(), s.getWaterIOR()));

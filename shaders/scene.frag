@@ -1,5 +1,5 @@
 #version 130
-#pragma import_defines(OSGWATER_FOG, OSGWATER_CAUSTICS, OSGWATER_CAUSTICS_CHANNELS, OSGWATER_CAUSTICS_TILED, OSGWATER_REFLECTED_CAUSTICS)
+#pragma import_defines(OSGWATER_FOG, OSGWATER_CAUSTICS, OSGWATER_CAUSTICS_CHANNELS, OSGWATER_CAUSTICS_TILED, OSGWATER_REFLECTED_CAUSTICS, OSGWATER_TRUE_POSITIONS)
 // Fixed-function look of the OBJ loader's geometry: material * texture, one sun + ambient, lit per
 // vertex (scene.vert). Variants by pass, never branches (a software rasteriser runs both sides):
 // - OSGWATER_CAUSTICS, where the pass can see below the water and caustics are on: under water the
@@ -9,13 +9,18 @@
 // - OSGWATER_REFLECTED_CAUSTICS, where the pass sees above the water and reflective caustics are
 //   on: above the water the sun reflected off it adds its irradiance from the sun's mirror image;
 // - OSGWATER_FOG, where the pass's eye is under water: everything is seen through water, its
-//   colour blended towards the water colour by the distance from this pass's eye (eq. 10).
+//   colour blended towards the water colour by the distance from this pass's eye (eq. 10);
+// - OSGWATER_TRUE_POSITIONS, the refraction pass drawing virtual vertices for the debug output:
+//   the fragment's true place in the water's local frame (a float target), alpha 1.
 uniform sampler2D osgWater_BaseTexture; // unit 0; a white texel when the geometry has none
 
 in vec2 vTexCoord;
 in vec4 vUnlit;
 in vec3 vSunLit;
 in vec2 vNdl;
+#ifdef OSGWATER_TRUE_POSITIONS
+in vec3 vTrueLocal;
+#endif
 
 #if defined(OSGWATER_CAUSTICS) || defined(OSGWATER_REFLECTED_CAUSTICS)
 #pragma include "caustics.glsl"
@@ -45,5 +50,9 @@ void main()
     vec3 a = exp(-osgWater_FogExtinction * (length(vEyePos) * osgWater_EyeUnit)); // eq. 4 with d = |A - C|, per channel
     c = osgWater_FogColor + a * (c - osgWater_FogColor);     // eq. 10
 #endif
+#ifdef OSGWATER_TRUE_POSITIONS
+    gl_FragColor = vec4(vTrueLocal, 1.0);
+#else
     gl_FragColor = vec4(c, vUnlit.a * tex.a);
+#endif
 }

@@ -1,10 +1,14 @@
 #version 130
-#pragma import_defines(OSGWATER_FOG, OSGWATER_CAUSTICS, OSGWATER_CAUSTICS_TILED, OSGWATER_REFLECTED_CAUSTICS)
+#pragma import_defines(OSGWATER_FOG, OSGWATER_CAUSTICS, OSGWATER_CAUSTICS_TILED, OSGWATER_REFLECTED_CAUSTICS, OSGWATER_VIRTUAL_VERTICES, OSGWATER_TRUE_POSITIONS)
 // The kit's program for the water's scene (the WaterNode's children): textured, lit by one sun,
 // and clipped by the pass plane so the reflection and refraction passes split the scene.
 // Lit per vertex like the fixed-function pipeline the OBJ loader's materials are made for: with
 // the water out of view this program must cost what fixed function costs, and a software
 // rasteriser pays for every fragment instruction. Both faces are lit (the fragment picks one).
+// OSGWATER_VIRTUAL_VERTICES (the refraction pass from above, WaterSettings::VIRTUAL_VERTICES):
+// each vertex is drawn at its virtual vertex, where it appears through the waves; everything else
+// (lighting, caustics, clipping) follows its true place. OSGWATER_TRUE_POSITIONS with it: the
+// fragment writes its true place (local frame) instead of a colour, for the debug output.
 uniform vec4 osgWater_ClipPlane;  // eye space; only active where GL_CLIP_DISTANCE0 is enabled
 uniform vec3 osgWater_SunEye;     // towards the sun, in this pass's eye space
 uniform vec3 osgWater_SunColor;
@@ -34,6 +38,12 @@ out vec2 vNdlR;   // n.l of the front and back faces for the reflected sun
 #endif
 #ifdef OSGWATER_FOG
 out vec3 vEyePos;
+#endif
+#ifdef OSGWATER_VIRTUAL_VERTICES
+#pragma include "virtualvertex.glsl"
+#endif
+#ifdef OSGWATER_TRUE_POSITIONS
+out vec3 vTrueLocal;
 #endif
 
 void main()
@@ -65,5 +75,14 @@ void main()
     vEyePos = eye.xyz / eye.w;
 #endif
     gl_ClipDistance[0] = dot(osgWater_ClipPlane, eye);
+#ifdef OSGWATER_VIRTUAL_VERTICES
+    vec3 trueLocal = (osgWater_PassEyeToLocal * eye).xyz / (osgWater_PassEyeToLocal * eye).w;
+    vec3 eyeLocal = osgWater_PassEyeToLocal[3].xyz / osgWater_PassEyeToLocal[3].w;
+    gl_Position = gl_ProjectionMatrix * (osgWater_PassLocalToEye * vec4(vvVirtualVertex(eyeLocal, trueLocal), 1.0));
+#ifdef OSGWATER_TRUE_POSITIONS
+    vTrueLocal = trueLocal;
+#endif
+#else
     gl_Position = gl_ProjectionMatrix * eye;
+#endif
 }

@@ -9,7 +9,8 @@
 // surroundings above the water in a cube map (local frame), read along rays the pass textures do
 // not hold.
 // Debug output (OSGWATER_DEBUG, see osgWater::DebugOutput), alpha says what rgb holds:
-//   2 a point (local frame), 3 a direction (local frame), -1 nothing found, -2 total internal reflection;
+//   2 a point (local frame), 3 a direction (local frame), 4 the point shown itself (virtual
+//   vertices: the true place of what the pass drew there), -1 nothing found, -2 total internal reflection;
 //   1: the refraction estimate W (the point whose colour is fetched), 2: the reflection lookup
 //   point (or direction), 3: r = the Fresnel weight F. The eye's side is a define
 // (set per view), not a uniform: a software rasteriser runs both sides of a branch.
@@ -89,6 +90,18 @@ owBottomHit owRefractionSearch(vec3 u1, vec3 R1)
 #endif
 }
 
+// Virtual vertices (OSGWATER_REFRACTION 4): the point the pass drew at u1's own place (its eye
+// is this view's), or none where it drew nothing.
+owBottomHit owVirtualHit(vec3 u1)
+{
+    vec2 tc;
+    owRefractionTexCoord(u1, tc);
+    float depth = texture(osgWater_RefractionDepth, tc).r;
+    vec4 p = osgWater_RefractionInvProj * vec4(vec3(tc, depth) * 2.0 - 1.0, 1.0);
+    vec3 V = p.xyz / p.w;
+    return owBottomHit(depth < 1.0, V, V, 0.0);
+}
+
 // The refracted colour seen from above: bottom search along R (eq. 4-5), or the plane offset.
 vec3 owRefractedFromAbove(vec3 U, vec3 R, out vec4 debugHit)
 {
@@ -102,6 +115,10 @@ vec3 owRefractedFromAbove(vec3 U, vec3 R, out vec4 debugHit)
     owBottomHit hit = owBottomHit(true, p1, p1, 0.0);
 #elif defined(OSGWATER_REFRACTION) && OSGWATER_REFRACTION == 0
     owBottomHit hit = owOneStepSearch(u1, R1, osgWater_OneStep.x, osgWater_OneStep.y);
+#elif defined(OSGWATER_REFRACTION) && OSGWATER_REFRACTION == 4
+    // virtual vertices: the pass drew the underwater scene where it appears, from this view's eye;
+    // U's own place in it holds what the refracted ray sees
+    owBottomHit hit = owVirtualHit(u1);
 #else
     owBottomHit hit = owRefractionSearch(u1, R1);
 #endif
@@ -113,6 +130,13 @@ vec3 owRefractedFromAbove(vec3 U, vec3 R, out vec4 debugHit)
         col = texture(osgWater_RefractionTex, tc).rgb;
         d = length(mat3(osgWater_RefractionViewInverse) * (hit.A - u1)); // local metres
         debugHit = vec4((osgWater_RefractionViewInverse * vec4(hit.W, 1.0)).xyz, 2.0);
+#if defined(OSGWATER_REFRACTION) && OSGWATER_REFRACTION == 4
+        d *= osgWater_IOR.y / osgWater_IOR.x; // the virtual point lies eta times as far (eq. 2.4)
+#if defined(OSGWATER_DEBUG) && OSGWATER_DEBUG == 1
+        vec4 shown = texture(osgWater_RefractionTex, tc); // the true place drawn there (a float target)
+        debugHit = shown.a > 0.5 ? vec4(shown.xyz, 4.0) : vec4(0.0, 0.0, 0.0, -1.0);
+#endif
+#endif
     }
     return osgWater_WaterColor + owAttenuation(osgWater_Extinction, d) * (col - osgWater_WaterColor);
 }

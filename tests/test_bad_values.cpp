@@ -190,7 +190,7 @@ TEST(BadValues, EnumsThatNameNoModelFallBackToTheDefaultWithOneWarning)
     };
     const EnumSetting enums[] = {
         { "fresnelModel", [](WaterSettings& s, int v) { s.setFresnelModel(WaterSettings::FresnelModel(v)); return int(s.getFresnelModel()); }, 3, 0 },
-        { "refractionLookup", [](WaterSettings& s, int v) { s.setRefractionLookup(WaterSettings::RefractionLookup(v)); return int(s.getRefractionLookup()); }, 3, 1 },
+        { "refractionLookup", [](WaterSettings& s, int v) { s.setRefractionLookup(WaterSettings::RefractionLookup(v)); return int(s.getRefractionLookup()); }, 4, 1 },
         { "reflectionLookup", [](WaterSettings& s, int v) { s.setReflectionLookup(WaterSettings::ReflectionLookup(v)); return int(s.getReflectionLookup()); }, 2, 2 },
         { "underwaterModel", [](WaterSettings& s, int v) { s.setUnderwaterModel(WaterSettings::UnderwaterModel(v)); return int(s.getUnderwaterModel()); }, 1, 0 },
         { "waterModel", [](WaterSettings& s, int v) { s.setWaterModel(WaterSettings::WaterModel(v)); return int(s.getWaterModel()); }, 1, 0 },

@@ -69,6 +69,7 @@ void buildScene(WaterNode* water, int kind)
 struct Group {
     int scene, steps; // steps 0: one-step lookup (or the plane offset, with planeLookups)
     bool bracketed;    // with steps: the bracketed search (else the thesis's iterative one)
+    bool virtualVertices; // with steps, not bracketed: virtual vertices instead of the search
     bool planeLookups; // the plane-offset refraction (when steps is 0) and reflection lookups
     bool offsetReflection; // without planeLookups: the thesis's offset reflection lookup, else the search
     WaterSettings::FresnelModel fresnel;
@@ -116,6 +117,7 @@ std::vector<Group> groups()
         x.steps = int((i * 7) % 9);
         x.planeLookups = i % 3 == 1;
         x.bracketed = i % 4 == 3;
+        x.virtualVertices = i % 4 == 1;
         x.offsetReflection = i % 2 == 0;
         x.fresnel = pick(fresnel, i / 5);
         x.underwater = pick(under, i / 3);
@@ -176,7 +178,7 @@ std::string describe(const Group& g, const Config& c)
 {
     std::ostringstream s;
     s << sceneName(g.scene) << ", "
-      << (g.steps ? (g.bracketed ? "bracketed " : "iterative ") + std::to_string(g.steps)
+      << (g.steps ? (g.bracketed ? "bracketed " : g.virtualVertices ? "virtual vertices " : "iterative ") + std::to_string(g.steps)
                   : std::string(g.planeLookups ? "plane" : "one-step"))
       << (g.planeLookups ? ", plane reflection" : g.offsetReflection ? ", offset reflection" : ", reflection search")
       << ", fresnel " << g.fresnel << ", underwater " << g.underwater << ", gather " << g.gather << (g.areaMesh ? " (mesh)" : "") << (g.procedural ? " (procedural)" : "") << (g.reflective ? " (reflective)" : "") << (g.tile > 0.0f ? " (tiled)" : "") << (g.environment ? ", environment map" : "") << ", textures "
@@ -191,7 +193,8 @@ std::string describe(const Group& g, const Config& c)
 void apply(WaterNode* water, const Group& g)
 {
     WaterSettings* s = water->getSettings();
-    s->setRefractionLookup(g.steps ? (g.bracketed ? WaterSettings::BRACKETED : WaterSettings::ITERATIVE)
+    s->setRefractionLookup(g.steps ? (g.bracketed ? WaterSettings::BRACKETED
+                                      : g.virtualVertices ? WaterSettings::VIRTUAL_VERTICES : WaterSettings::ITERATIVE)
                            : g.planeLookups ? WaterSettings::PLANE_OFFSET : WaterSettings::ONE_STEP);
     s->setReflectionLookup(g.planeLookups ? WaterSettings::REFLECTION_PLANE
                            : g.offsetReflection ? WaterSettings::REFLECTION_OFFSET : WaterSettings::REFLECTION_SEARCH);

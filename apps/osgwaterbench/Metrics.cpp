@@ -67,6 +67,11 @@ bool entersPassSide(const Estimate& e, const glm::dvec3& dir, double& t0)
 
 bool shownPoint(const osg::Vec4f& est, const Estimate& e, const RayCaster& scene, glm::dvec3& out)
 {
+    // virtual vertices: the true place of what the pass drew, shown as it is
+    if (est.w() > 3.5f && est.w() < 4.5f) {
+        out = glm::dvec3(est.x(), est.y(), est.z());
+        return true;
+    }
     const glm::dvec3 C = refractionEye(e);
     glm::dvec3 dir;
     if (est.w() > 1.5f && est.w() < 2.5f) dir = glm::dvec3(est.x(), est.y(), est.z()) - C;

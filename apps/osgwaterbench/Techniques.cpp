@@ -17,6 +17,7 @@ std::vector<Technique> allTechniques()
                          s.setSearchSteps(steps);
                      } });
     t.push_back({ "refraction-bracketed", [](WaterSettings& s) { s.setRefractionLookup(WaterSettings::BRACKETED); } });
+    t.push_back({ "refraction-virtual-vertices", [](WaterSettings& s) { s.setRefractionLookup(WaterSettings::VIRTUAL_VERTICES); } });
     t.push_back({ "refraction-plane", [](WaterSettings& s) { s.setRefractionLookup(WaterSettings::PLANE_OFFSET); } });
     t.push_back({ "reflection-offset", [](WaterSettings& s) { s.setReflectionLookup(WaterSettings::REFLECTION_OFFSET); } });
     t.push_back({ "reflection-plane", [](WaterSettings& s) { s.setReflectionLookup(WaterSettings::REFLECTION_PLANE); } });

@@ -111,7 +111,7 @@ bool LakeOptions::read(osg::ArgumentParser& args)
     std::string s;
     float f, g, h;
     int n;
-    if (!readEnumOption(args, "--lookup", "one-step|iterative|plane|bracketed", WaterSettings::refractionLookupFromName,
+    if (!readEnumOption(args, "--lookup", "one-step|iterative|plane|bracketed|virtual-vertices", WaterSettings::refractionLookupFromName,
                         &WaterSettings::setRefractionLookup, _setters) ||
         !readEnumOption(args, "--reflection-lookup", "search|offset|plane", WaterSettings::reflectionLookupFromName,
                         &WaterSettings::setReflectionLookup, _setters) ||

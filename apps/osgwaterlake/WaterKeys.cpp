@@ -9,8 +9,8 @@ bool WaterKeys::handle(const osgGA::GUIEventAdapter& ea, osgGA::GUIActionAdapter
     switch (ea.getKey()) {
     case 'r': s.setReflectionEnabled(!s.getReflectionEnabled()); return true;
     case 'f': s.setRefractionEnabled(!s.getRefractionEnabled()); return true;
-    case 't': // iterative -> plane offset -> bracketed -> one-step -> iterative (the enum's order)
-        s.setRefractionLookup(WaterSettings::RefractionLookup((int(s.getRefractionLookup()) + 1) % (WaterSettings::BRACKETED + 1)));
+    case 't': // iterative -> plane offset -> bracketed -> virtual vertices -> one-step -> iterative (the enum's order)
+        s.setRefractionLookup(WaterSettings::RefractionLookup((int(s.getRefractionLookup()) + 1) % (WaterSettings::VIRTUAL_VERTICES + 1)));
         return true;
     case 'e': // search -> offset -> plane -> search
         s.setReflectionLookup(s.getReflectionLookup() == WaterSettings::REFLECTION_SEARCH ? WaterSettings::REFLECTION_OFFSET
@@ -91,7 +91,7 @@ void WaterKeys::getUsage(osg::ApplicationUsage& u) const
 {
     u.addKeyboardMouseBinding("r", "Toggle reflection");
     u.addKeyboardMouseBinding("f", "Toggle refraction");
-    u.addKeyboardMouseBinding("t", "Next refraction lookup (iterative, plane offset, bracketed, one-step)");
+    u.addKeyboardMouseBinding("t", "Next refraction lookup (iterative, plane offset, bracketed, virtual vertices, one-step)");
     u.addKeyboardMouseBinding("e", "Next reflection lookup (search, offset U + cR, plane offset)");
     u.addKeyboardMouseBinding("i", "Switch the surface's mesh (rings around the eye / the thesis's uniform grid)");
     u.addKeyboardMouseBinding("+/-", "More / fewer search steps");

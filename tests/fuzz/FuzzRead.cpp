@@ -49,7 +49,7 @@ std::string checkSettings(const osgWater::WaterSettings& s)
         return "a colour or the sun direction is not finite";
     using W = osgWater::WaterSettings;
     auto outside = [](int v, int last) { return v < 0 || v > last; };
-    if (outside(s.getFresnelModel(), W::FRESNEL_RECIPROCAL) || outside(s.getRefractionLookup(), W::BRACKETED) ||
+    if (outside(s.getFresnelModel(), W::FRESNEL_RECIPROCAL) || outside(s.getRefractionLookup(), W::VIRTUAL_VERTICES) ||
         outside(s.getReflectionLookup(), W::REFLECTION_SEARCH) || outside(s.getCausticsGather(), W::GATHER_CPU) ||
         outside(s.getCausticsMethod(), W::CAUSTICS_PROCEDURAL) || outside(s.getUnderwaterModel(), W::UNDERWATER_THESIS))
         return "an enum setting holds a value it does not define";
