@@ -193,7 +193,7 @@ osg::Geode* emissiveQuad(const osg::Vec3& a, const osg::Vec3& b, const osg::Vec3
     return geode;
 }
 
-osg::Geode* checkerPlane(float z, float size, float cell)
+osg::Geode* checkerPlane(float z, float size, float cell, int quadsPerSide)
 {
     // one texel per cell, repeated: exact cell edges with nearest filtering
     const int n = 2;
@@ -213,11 +213,15 @@ osg::Geode* checkerPlane(float z, float size, float cell)
     tex->setWrap(osg::Texture::WRAP_T, osg::Texture::REPEAT);
     tex->setResizeNonPowerOfTwoHint(false);
 
-    const float h = 0.5f * size;
+    const float h = 0.5f * size, step = size / float(std::max(quadsPerSide, 1));
     osg::Geometry* g = new osg::Geometry;
     osg::Vec3Array* v = new osg::Vec3Array;
-    v->push_back(osg::Vec3(-h, -h, z)); v->push_back(osg::Vec3(h, -h, z));
-    v->push_back(osg::Vec3(h, h, z));   v->push_back(osg::Vec3(-h, h, z));
+    for (int j = 0; j < std::max(quadsPerSide, 1); ++j)
+        for (int i = 0; i < std::max(quadsPerSide, 1); ++i) {
+            const float x0 = -h + i * step, y0 = -h + j * step, x1 = x0 + step, y1 = y0 + step;
+            v->push_back(osg::Vec3(x0, y0, z)); v->push_back(osg::Vec3(x1, y0, z));
+            v->push_back(osg::Vec3(x1, y1, z)); v->push_back(osg::Vec3(x0, y1, z));
+        }
     osg::Vec2Array* t = new osg::Vec2Array;
     // texture coordinate = position / (2 cell): one repeat of the 2x2 image per 2 cells
     for (const osg::Vec3& p : *v) t->push_back(osg::Vec2(p.x() / (2.0f * cell), p.y() / (2.0f * cell)));
@@ -226,7 +230,7 @@ osg::Geode* checkerPlane(float z, float size, float cell)
     osg::Vec3Array* n3 = new osg::Vec3Array(1);
     (*n3)[0].set(0, 0, 1);
     g->setNormalArray(n3, osg::Array::BIND_OVERALL);
-    g->addPrimitiveSet(new osg::DrawArrays(GL_QUADS, 0, 4));
+    g->addPrimitiveSet(new osg::DrawArrays(GL_QUADS, 0, GLsizei(v->size())));
     osg::Geode* geode = new osg::Geode;
     geode->addDrawable(g);
     geode->getOrCreateStateSet()->setAttribute(unlit(osg::Vec4(1, 1, 1, 1)));

@@ -97,8 +97,9 @@ osg::Geode* litQuad(const osg::Vec3& a, const osg::Vec3& b, const osg::Vec3& c, 
 osg::Geode* emissiveQuad(const osg::Vec3& a, const osg::Vec3& b, const osg::Vec3& c, const osg::Vec3& d,
                          const osg::Vec4& color);
 //! A horizontal square at height z, side `size`, with an unlit black/white checkerboard of
-//! `cell` metres (cell (i, j) white when i + j is even; nearest filtering).
-osg::Geode* checkerPlane(float z, float size, float cell);
+//! `cell` metres (cell (i, j) white when i + j is even; nearest filtering), drawn as
+//! `quadsPerSide` x `quadsPerSide` quads (geometry moved per vertex needs more than one).
+osg::Geode* checkerPlane(float z, float size, float cell, int quadsPerSide = 1);
 //! Checker colour (1 white, 0 black) at (x, y) for a board made by checkerPlane.
 float checkerAt(double x, double y, float cell);
 
