@@ -247,8 +247,11 @@ void CausticsCamera::update(const Frame& f)
         c->setWrap(osg::Texture::WRAP_S, wrap);
         c->setWrap(osg::Texture::WRAP_T, wrap);
     }
-    if (c->getFilter(osg::Texture::MAG_FILTER) != filter) {
-        c->setFilter(osg::Texture::MIN_FILTER, filter);
+    // filtered: between the mipmap levels the gather makes as well
+    const osg::Texture::FilterMode minFilter =
+        filter == osg::Texture::LINEAR ? osg::Texture::LINEAR_MIPMAP_LINEAR : filter;
+    if (c->getFilter(osg::Texture::MAG_FILTER) != filter || c->getFilter(osg::Texture::MIN_FILTER) != minFilter) {
+        c->setFilter(osg::Texture::MIN_FILTER, minFilter);
         c->setFilter(osg::Texture::MAG_FILTER, filter);
     }
 }

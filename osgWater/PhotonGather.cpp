@@ -160,7 +160,16 @@ PhotonGather::PhotonGather(osg::Texture2D* photons, int gridSize, int resolution
     _caustics = makeTargetTexture(resolution, floatTarget ? GL_R32F : GL_RGBA16, floatTarget ? GL_RED : GL_RGBA,
                                   floatTarget ? GL_FLOAT : GL_UNSIGNED_SHORT, true);
     _caustics->setName("osgWater.caustics");
-    attach(osg::Camera::COLOR_BUFFER, _caustics.get());
+    // mipmaps, made after every draw: a pattern of texels seen from afar aliases without them (the
+    // procedural caustics' paper says so; photons' splats are smoother, but a bed seen at a grazing
+    // angle minifies them too)
+    _caustics->setFilter(osg::Texture::MIN_FILTER, osg::Texture::LINEAR_MIPMAP_LINEAR);
+    // the attachment's flag makes them after every draw, but only into the levels the storage has,
+    // and OSG makes an image-less texture's storage (glTexStorage2D) with this many: one unless told
+    unsigned int levels = 1;
+    while ((resolution >> levels) > 0) ++levels;
+    _caustics->setNumMipmapLevels(levels);
+    attach(osg::Camera::COLOR_BUFFER, _caustics.get(), 0, 0, true); // made after every draw
 
     osg::StateSet* ss = getOrCreateStateSet();
     ss->setDataVariance(osg::Object::DYNAMIC); // the paths switch between frames

@@ -76,7 +76,7 @@ osg::Vec2d Harness::pixelOf(const osg::Vec3d& p) const
     return osg::Vec2d((c.x() / c.w() * 0.5 + 0.5) * _w, (c.y() / c.w() * 0.5 + 0.5) * _h);
 }
 
-osg::ref_ptr<osg::Image> readTexture(osg::GraphicsContext* gc, osg::Texture2D* texture)
+osg::ref_ptr<osg::Image> readTexture(osg::GraphicsContext* gc, osg::Texture2D* texture, int level)
 {
     gc->makeCurrent();
     const GLenum before = glGetError(); // errors the frame left behind are the frame's, not ours
@@ -85,7 +85,7 @@ osg::ref_ptr<osg::Image> readTexture(osg::GraphicsContext* gc, osg::Texture2D* t
     osg::Texture::TextureObject* to = texture->getTextureObject(id);
     osg::ref_ptr<osg::Image> img = new osg::Image;
     if (to) {
-        const int w = texture->getTextureWidth(), h = texture->getTextureHeight();
+        const int w = std::max(texture->getTextureWidth() >> level, 1), h = std::max(texture->getTextureHeight() >> level, 1);
         img->allocateImage(w, h, 1, GL_RGBA, GL_FLOAT);
         GLint bound = 0; // restored afterwards: osg::State believes it is still bound
         glGetIntegerv(GL_TEXTURE_BINDING_2D, &bound);
@@ -93,11 +93,11 @@ osg::ref_ptr<osg::Image> readTexture(osg::GraphicsContext* gc, osg::Texture2D* t
         const GLint fmt = texture->getInternalFormat();
         if (fmt == GL_DEPTH_COMPONENT24 || fmt == GL_DEPTH_COMPONENT) {
             std::vector<float> depth(size_t(w) * h);
-            glGetTexImage(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT, GL_FLOAT, depth.data());
+            glGetTexImage(GL_TEXTURE_2D, level, GL_DEPTH_COMPONENT, GL_FLOAT, depth.data());
             float* p = reinterpret_cast<float*>(img->data());
             for (size_t i = 0; i < depth.size(); ++i) p[4 * i] = p[4 * i + 1] = p[4 * i + 2] = p[4 * i + 3] = depth[i];
         } else {
-            glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_FLOAT, img->data());
+            glGetTexImage(GL_TEXTURE_2D, level, GL_RGBA, GL_FLOAT, img->data());
         }
         glBindTexture(GL_TEXTURE_2D, GLuint(bound));
         const GLenum err = glGetError();
@@ -123,7 +123,7 @@ void dumpImage(const osg::Image* img, const std::string& name)
     osgDB::writeImageFile(*out, std::string(dir) + "/" + std::to_string(counter++) + "_" + name + ".png");
 }
 
-osg::ref_ptr<osg::Image> Harness::readTexture(osg::Texture2D* texture) { return testing_gl::readTexture(_gc.get(), texture); }
+osg::ref_ptr<osg::Image> Harness::readTexture(osg::Texture2D* texture, int level) { return testing_gl::readTexture(_gc.get(), texture, level); }
 
 std::ostream& operator<<(std::ostream& os, const GLCounts& c)
 {

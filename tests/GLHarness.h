@@ -56,8 +56,9 @@ public:
     osg::Vec2d pixelOf(const osg::Vec3d& p) const;
     //! The main camera's float colour target, read back after the last frame.
     osg::ref_ptr<osg::Image> readColor() { return readTexture(_target.get()); }
-    //! Any texture on this context as float RGBA (depth textures: depth in every channel).
-    osg::ref_ptr<osg::Image> readTexture(osg::Texture2D* texture);
+    //! Any texture on this context as float RGBA (depth textures: depth in every channel), at a
+    //! mipmap level.
+    osg::ref_ptr<osg::Image> readTexture(osg::Texture2D* texture, int level = 0);
 
 private:
     int _w, _h;
@@ -69,7 +70,7 @@ private:
 
 //! Binds a float RGBA texture target to a camera (FBO) on the given context.
 osg::Texture2D* attachFloatTarget(osg::Camera* camera, osg::GraphicsContext* gc, int w, int h);
-osg::ref_ptr<osg::Image> readTexture(osg::GraphicsContext* gc, osg::Texture2D* texture);
+osg::ref_ptr<osg::Image> readTexture(osg::GraphicsContext* gc, osg::Texture2D* texture, int level = 0);
 
 // --- GL objects ----------------------------------------------------------------------------------
 //! Live GL objects of one context, counted by name (glIs*).

@@ -281,6 +281,40 @@ TEST(RenderCaustics, ProceduralCausticsOverASineWaveAreTheirCpuMirrorsTexelByTex
     }
 }
 
+TEST(RenderCaustics, TheCausticsTextureHasMipmapsOfItsOwnTexelsEveryFrame)
+{
+    // the procedural caustics' paper mipmaps its texture against aliasing (and so do the other
+    // methods, through the same texture): level 1 must be the 2 x 2 means of level 0 in every frame
+    // (the waves move), and it is read through the mipmaps
+    CausticsScene sc(8.0f, 256, 64, osg::Vec3(0.3f, 0.2f, 0.93f), -2.0f);
+    REQUIRE_GL(sc.h);
+    Wave w;
+    w.direction.set(1.0f, 0.0f);
+    w.wavelength = 2.0f;
+    w.amplitude = 0.03f;
+    sc.water->getSurface()->setWaves({ w });
+    sc.water->getSettings()->setCausticsMethod(WaterSettings::CAUSTICS_PROCEDURAL);
+    for (double t : { 1.0, 1.7 }) {
+        sc.h.frame(t);
+        osg::Texture2D* c = sc.water->getCausticsCamera()->getCausticsTexture();
+        EXPECT_EQ(c->getFilter(osg::Texture::MIN_FILTER), osg::Texture::LINEAR_MIPMAP_LINEAR);
+        osg::ref_ptr<osg::Image> base = sc.h.readTexture(c, 0), half = sc.h.readTexture(c, 1);
+        ASSERT_TRUE(base.valid() && half.valid());
+        ASSERT_EQ(half->s(), base->s() / 2);
+        double worst = 0.0, lit = 0.0;
+        for (int j = 0; j < half->t(); ++j)
+            for (int i = 0; i < half->s(); ++i) {
+                const double mean = 0.25 * (pixel(base.get(), 2 * i, 2 * j)[0] + pixel(base.get(), 2 * i + 1, 2 * j)[0] +
+                                            pixel(base.get(), 2 * i, 2 * j + 1)[0] + pixel(base.get(), 2 * i + 1, 2 * j + 1)[0]);
+                worst = std::max(worst, std::fabs(pixel(half.get(), i, j)[0] - mean));
+                lit = std::max(lit, mean);
+            }
+        EXPECT_GT(lit, 0.01) << "the construction lights lines at t = " << t;
+        // tolerance: two steps of the 16-bit target
+        EXPECT_LT(worst, 2.0 / 65535.0) << "level 1 is not the means of level 0 at t = " << t;
+    }
+}
+
 TEST(RenderCaustics, ProceduralCausticsGiveTheirPhotonsBackToATileAndToTheSunsReflection)
 {
     // procedural caustics empty the photon pass; tiled after them, the tile's photons are drawn again
