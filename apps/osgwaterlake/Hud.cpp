@@ -65,11 +65,16 @@ public:
         char fps[32] = "-- fps"; // until two frames have been seen
         if (_fps > 0) std::snprintf(fps, sizeof(fps), "%.1f fps", _fps);
         const osgWater::CausticsCamera* c = _water->getCausticsCamera();
-        char line[256];
-        std::snprintf(line, sizeof(line), "%s   reflection %.2f ms   refraction %.2f ms   caustics %.2f ms (GPU)\n", fps,
-                      p ? p->getReflectionMilliseconds() : -1.0, p ? p->getRefractionMilliseconds() : -1.0,
-                      c ? c->getMilliseconds() : -1.0);
-        _text->setText(std::string(line) + describeSettings(*_water->getSettings()) + ", " +
+        // a pass that did not run (or is not timed on its own: caustics made per pixel) has no time
+        auto ms = [](double v) {
+            char s[32] = "--";
+            if (v >= 0.0) std::snprintf(s, sizeof(s), "%.2f ms", v);
+            return std::string(s);
+        };
+        const std::string line = std::string(fps) + "   reflection " + ms(p ? p->getReflectionMilliseconds() : -1.0) +
+                                 "   refraction " + ms(p ? p->getRefractionMilliseconds() : -1.0) + "   caustics " +
+                                 ms(c ? c->getMilliseconds() : -1.0) + " (GPU)\n";
+        _text->setText(line + describeSettings(*_water->getSettings()) + ", " +
                        describeSurface(*_water->getSurface()) + ", caustics " + describeCaustics(*_water) +
                        "\nkeys: r reflection  f refraction  t technique  e reflection lookup  +/- steps  m fresnel  o rotation  k caustics  g gather  a caustics mesh  x 2x2  y reflective  v environment  i surface mesh  u under water  n model  l glow  s stats  arrows move");
         traverse(node, nv);
