@@ -220,9 +220,15 @@ void CausticsCamera::update(const Frame& f)
         _photons->setSun(f.surface, sun, proj, _depth.get(), _reflected ? &mirror : nullptr);
         if (_shade.valid()) _photons->setSunShade(_shade->getDepthTexture(), shadeProj);
     }
-    // the procedural caustics trace no photons (a tile's and the sun's reflection keep theirs): the
+    // the procedural caustics trace no photons (a tile's and the sun's reflection keep theirs). Per
+    // pixel, the scene program makes them and neither the photons nor the gather run, unless the
+    // sun's reflection runs those passes anyway: then into the texture. Into the texture, the
     // photon pass stays, empty (no surface, no clear), only as the start of the caustics' GPU timer
-    _photons->setEmpty(!_reflected && !_tiled && f.settings->getCausticsMethod() == WaterSettings::CAUSTICS_PROCEDURAL);
+    const WaterSettings::CausticsMethod method = f.settings->getCausticsMethod();
+    const bool procedural = !_reflected && !_tiled &&
+                            (method == WaterSettings::CAUSTICS_PROCEDURAL || method == WaterSettings::CAUSTICS_PROCEDURAL_SCREEN);
+    _lighting.procedural = procedural && method == WaterSettings::CAUSTICS_PROCEDURAL_SCREEN && !reflectedNeeded(f);
+    _photons->setEmpty(procedural && !_lighting.procedural);
     _lighting.tiled = _tiled;
 
     double l, r, b, t, n, fa;
@@ -230,10 +236,14 @@ void CausticsCamera::update(const Frame& f)
     _window.set(r - l, t - b, fa - n);
     const double texel = std::max(r - l, t - b) / getGridSize();
     _lighting.localToSun = view * proj * clipToTexture(); // reflected: a fragment mirrored first
-    if (!_reflected && !_tiled && f.settings->getCausticsMethod() == WaterSettings::CAUSTICS_PROCEDURAL)
+    if (procedural && !_lighting.procedural)
         _gather->setProceduralSun(osg::Matrixd::inverse(_lighting.localToSun), view, f.towardsSun, _depth.get(),
                                   _shade.valid() ? _shade->getDepthTexture() : nullptr, shadeProj);
-    _lighting.intensity = f.settings->getCausticsIntensity() * _gather->getValueScale();
+    _lighting.shade = _lighting.procedural && _shade.valid() ? _shade->getDepthTexture() : nullptr;
+    _lighting.sunView = view;
+    _lighting.shadeProjection = shadeProj;
+    // the texture holds value / scale; per pixel the value itself
+    _lighting.intensity = f.settings->getCausticsIntensity() * (_lighting.procedural ? 1.0f : _gather->getValueScale());
     // the photons' green-channel fade is the others' too in the air
     // (a tile's photons carry no fade: the fragment's depth gives all of it)
     _lighting.channelExtinction = _reflected ? osg::Vec3f() : channelExtinction(*f.settings, _tiled);
@@ -310,6 +320,8 @@ WaterSettings::CausticsGather CausticsCamera::resolveGather(const WaterSettings&
     // a tile is the area-ratio mesh's (photon splats would lose the light straddling its edges); the
     // sun's reflection has no procedural construction: its photons stay
     WaterSettings::CausticsMethod method = _tiled ? WaterSettings::CAUSTICS_AREA_MESH : settings.getCausticsMethod();
+    // the gather's procedural path is the texture-space variant's, which the per-pixel one falls back to
+    if (method == WaterSettings::CAUSTICS_PROCEDURAL_SCREEN) method = WaterSettings::CAUSTICS_PROCEDURAL;
     if (_reflected && method == WaterSettings::CAUSTICS_PROCEDURAL) method = WaterSettings::CAUSTICS_PHOTONS;
     if (_tiled && settings.getCausticsMethod() != method && !_saidTiledMesh) {
         _saidTiledMesh = true;

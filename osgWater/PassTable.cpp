@@ -7,6 +7,7 @@ namespace {
 bool always(const FrameFacts&) { return true; }
 bool causticsToRender(const FrameFacts& f) { return f.caustics && !f.causticsDone; }
 bool sunDepthToRender(const FrameFacts& f) { return causticsToRender(f) && f.sunDepthStale; }
+bool photonsToRender(const FrameFacts& f) { return causticsToRender(f) && !f.causticsInScene; }
 bool reflectionWanted(const FrameFacts& f) { return f.waterInView && f.reflectionEnabled; }
 bool refractionWanted(const FrameFacts& f) { return f.waterInView && f.refractionEnabled; }
 bool waterInView(const FrameFacts& f) { return f.waterInView; }
@@ -23,8 +24,8 @@ const PassRow kTable[PASS_COUNT] = {
     // id                   name               stage               reads                        writes                 litScene perView wanted
     { PASS_ENVIRONMENT,    "environment",     STAGE_PRE_RENDER, 0,                            RES_ENVIRONMENT,       false, false, environmentToRender },
     { PASS_SUN_DEPTH,      "sun depth",       STAGE_PRE_RENDER, 0,                            RES_SUN_DEPTH,         false, false, sunDepthToRender },
-    { PASS_PHOTONS,        "photons",         STAGE_PRE_RENDER, RES_SUN_DEPTH,                RES_PHOTONS,           false, false, causticsToRender },
-    { PASS_GATHER,         "gather",          STAGE_PRE_RENDER, RES_PHOTONS,                  RES_CAUSTICS,          false, false, causticsToRender },
+    { PASS_PHOTONS,        "photons",         STAGE_PRE_RENDER, RES_SUN_DEPTH,                RES_PHOTONS,           false, false, photonsToRender },
+    { PASS_GATHER,         "gather",          STAGE_PRE_RENDER, RES_PHOTONS,                  RES_CAUSTICS,          false, false, photonsToRender },
     { PASS_REFLECTION,     "reflection",      STAGE_PRE_RENDER, 0,                            RES_REFLECTION,        true,  true,  reflectionWanted },
     { PASS_REFRACTION,     "refraction",      STAGE_PRE_RENDER, 0,                            RES_REFRACTION,        true,  true,  refractionWanted },
     { PASS_GLOW_HIGHLIGHT, "glow highlight",  STAGE_PRE_RENDER, 0,                            RES_GLOW_HIGHLIGHT,    false, true,  glowWanted },

@@ -2,7 +2,6 @@
 #include <osgWater/PhotonSplat>
 #include <osgWater/Shaders>
 #include <osgWater/PassCamera>
-#include <osgWater/ProceduralCaustics>
 #include <osgWater/SceneLighting>
 #include <osgWater/ScreenTriangle>
 #include <osg/BlendFunc>
@@ -191,9 +190,6 @@ PhotonGather::PhotonGather(osg::Texture2D* photons, int gridSize, int resolution
     _proceduralState->setName("osgWater.procedural");
     _proceduralState->setDataVariance(osg::Object::DYNAMIC);
     _proceduralState->setAttribute(createProgram("osgWater.procedural", "screen.vert", "procedural.frag"));
-    const procedural::SunHalo halo;
-    _proceduralState->addUniform(new osg::Uniform("osgWater_SunHalo", osg::Vec3f(float(halo.discRadius),
-                                                  float(halo.haloRadius), float(halo.haloLevel))));
     _proceduralState->addUniform(new osg::Uniform("osgWater_ProceduralScale", 1.0f / _valueScale));
     _proceduralState->addUniform(new osg::Uniform("osgWater_SunBedDepth", int(UNIT_PASS_INPUT)));
 }

@@ -49,15 +49,6 @@ void RefractionCamera::update(const PassContext& ctx)
     const bool truePositions = _virtualVertices && ctx.truePositions;
     setDefineIf(ss, "OSGWATER_VIRTUAL_VERTICES", _virtualVertices);
     setDefineIf(ss, "OSGWATER_TRUE_POSITIONS", truePositions);
-    if (_virtualVertices) {
-        auto uniform = [ss](const char* name) {
-            osg::Uniform* u = ss->getUniform(name);
-            if (!u) ss->addUniform(u = new osg::Uniform(name, osg::Matrixf()));
-            return u;
-        };
-        uniform("osgWater_PassLocalToEye")->set(osg::Matrixf(view));
-        uniform("osgWater_PassEyeToLocal")->set(osg::Matrixf(osg::Matrixd::inverse(view)));
-    }
     if (truePositions && !_truePositions.valid()) {
         // nearest: a blend of two surfaces' places is neither
         _truePositions = makeTargetTexture(_width, _height, GL_RGBA32F_ARB, GL_RGBA, GL_FLOAT, false);

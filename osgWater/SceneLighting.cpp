@@ -25,6 +25,9 @@ void osgWater::applySceneLighting(osg::StateSet* ss, const SceneLighting& l, con
     setOrAddUniform(ss, "osgWater_FogColor", osg::Vec3f(l.fogColor));
     setOrAddUniform(ss, "osgWater_FogExtinction", osg::Vec3f(l.fogExtinction));
     setOrAddUniform(ss, "osgWater_EyeUnit", float(localLengthPerEyeLength(view)));
+    // the water's frame in the pass (virtual vertices, procedural caustics)
+    setOrAddUniform(ss, "osgWater_EyeToLocal", osg::Matrixf(osg::Matrixd::inverse(view)));
+    setOrAddUniform(ss, "osgWater_LocalToEye", osg::Matrixf(view));
     // variants, not branches: a pass without water between its eye and the scene (every pass with
     // the eye above the water) compiles no fog at all (a software rasteriser runs both sides of a branch)
     setDefineIf(ss, "OSGWATER_FOG", l.fogExtinction != osg::Vec3());
@@ -48,8 +51,19 @@ void osgWater::applySceneLighting(osg::StateSet* ss, const SceneLighting& l, con
     setDefineIf(ss, "OSGWATER_CAUSTICS_CHANNELS", c && c->channelExtinction != osg::Vec3f());
     setDefineIf(ss, "OSGWATER_CAUSTICS_TILED", c && c->tiled);
     setOrAddUniform(ss, "osgWater_EyeToTile", c && c->tiled ? osg::Matrixf(osg::Matrixd::inverse(view) * c->localToTile) : osg::Matrixf());
-    setTextureIf(ss, UNIT_CAUSTICS, c ? c->caustics.get() : nullptr);
+    setTextureIf(ss, UNIT_CAUSTICS, c && !c->procedural ? c->caustics.get() : nullptr);
     setTextureIf(ss, UNIT_SUN_DEPTH, c ? c->depth.get() : nullptr);
+    // the procedural caustics made here: the construction's inputs (the waves, indices, Fresnel and
+    // extinction come with the scene's StateSet)
+    const bool procedural = c && c->procedural;
+    setDefineIf(ss, "OSGWATER_CAUSTICS_PROCEDURAL", procedural);
+    setDefineIf(ss, "OSGWATER_PROCEDURAL_SHADE", procedural && c->shade.valid());
+    setOrAddUniform(ss, "osgWater_TowardsSunLocal", l.towardsSun);
+    setOrAddUniform(ss, "osgWater_SunView", procedural ? osg::Matrixf(c->sunView) : osg::Matrixf());
+    setOrAddUniform(ss, "osgWater_SunShadeProj", procedural ? osg::Matrixf(c->shadeProjection) : osg::Matrixf());
+    setOrAddUniform(ss, "osgWater_SunShadeInvProj",
+                    procedural ? osg::Matrixf(osg::Matrixd::inverse(c->shadeProjection)) : osg::Matrixf());
+    setTextureIf(ss, UNIT_SUN_SHADE, procedural ? c->shade.get() : nullptr);
 
     // the reflected sun: from the sun's mirror image under the water
     const CausticsLighting* r = l.reflectedCaustics;

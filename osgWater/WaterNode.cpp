@@ -274,7 +274,7 @@ void WaterNode::cull(osgUtil::CullVisitor& cv)
 
     // 2. which passes run: the pass table, planned from the facts (a pass nothing reads does not)
     PassPlan plan = planPasses(v.facts);
-    if (plan.runs(PASS_PHOTONS) && !claimCaustics(v, plan)) {
+    if ((plan.runs(PASS_PHOTONS) || plan.runs(PASS_SUN_DEPTH)) && !claimCaustics(v, plan)) {
         v.facts.causticsDone = true; // another view on this context rendered them meanwhile
         plan = planPasses(v.facts);
     }
@@ -396,7 +396,8 @@ SceneLighting WaterNode::sceneLighting(const ViewFrame& v, const PassPlan& plan)
         l.fogExtinction = s.getViewExtinction();
     }
     // the caustics, when this frame has them on this context (rendered now or by another view)
-    if (v.facts.caustics && (plan.runs(PASS_GATHER) || v.facts.causticsDone)) {
+    // (per pixel, whenever the sun's depth map holds: the scene program makes them itself)
+    if (v.facts.caustics && (plan.runs(PASS_GATHER) || v.facts.causticsDone || v.facts.causticsInScene)) {
         l.caustics = &_caustics->getLighting();
         if (v.facts.reflectedCaustics) l.reflectedCaustics = &_reflectedCaustics->getLighting();
     }
@@ -618,6 +619,7 @@ void WaterNode::prepareCaustics(ViewFrame& v)
     }
     if (!_causticsNeeded || !_caustics.valid()) return;
     v.facts.caustics = true;
+    v.facts.causticsInScene = _caustics->getLighting().procedural;
     auto done = _causticsRendered.find(v.contextID);
     v.facts.causticsDone = done != _causticsRendered.end() &&
                            (done->second.frame == v.frameNumber ||
@@ -663,7 +665,7 @@ bool WaterNode::claimCaustics(const ViewFrame& v, const PassPlan& plan)
         _caustics->markDepthDrawn(v.contextID);
         if (reflected) _reflectedCaustics->markDepthDrawn(v.contextID);
     }
-    if (_gatherResolved != v.frameNumber) { // the gather follows frames that render caustics
+    if (plan.runs(PASS_PHOTONS) && _gatherResolved != v.frameNumber) { // the gather follows frames that gather
         _gatherResolved = v.frameNumber;
         _caustics->resolveGather(*_settings, v.support);
         if (reflected) _reflectedCaustics->resolveGather(*_settings, v.support);

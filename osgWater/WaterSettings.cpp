@@ -125,7 +125,7 @@ void WaterSettings::setReflectionPlaneHeight(float m) { _reflectionPlaneHeight =
 void WaterSettings::setRefractionPlaneDepth(float m) { _refractionPlaneDepth = clampOr("refractionPlaneDepth", m, 0.0f, 10000.0f, 0.0f); touch(); }
 void WaterSettings::setUnderwaterModel(UnderwaterModel m) { _underwaterModel = validEnum("underwaterModel", m, UNDERWATER_THESIS, UNDERWATER_PHYSICAL); touch(); }
 void WaterSettings::setCausticsGather(CausticsGather g) { _causticsGather = validEnum("causticsGather", g, GATHER_CPU, GATHER_AUTO); touch(); }
-void WaterSettings::setCausticsMethod(CausticsMethod m) { _causticsMethod = validEnum("causticsMethod", m, CAUSTICS_PROCEDURAL, CAUSTICS_PHOTONS); touch(); }
+void WaterSettings::setCausticsMethod(CausticsMethod m) { _causticsMethod = validEnum("causticsMethod", m, CAUSTICS_PROCEDURAL_SCREEN, CAUSTICS_PHOTONS); touch(); }
 void WaterSettings::setAirIOR(float v) { _airIOR = clampOr("airIOR", v, 1.0f, 3.0f, 1.0f); touch(); }
 void WaterSettings::setWaterIOR(float v) { _waterIOR = clampOr("waterIOR", v, 1.0f, 3.0f, 1.333f); touch(); }
 void WaterSettings::setWaterColor(const osg::Vec3& c) { _waterColor = clampColor("waterColor", c, osg::Vec3(0.0f, 0.2f, 0.1f), 1.0f); touch(); }
@@ -140,7 +140,7 @@ const char* const kRefractionLookupNames[] = { "one-step", "iterative", "plane",
 const char* const kReflectionLookupNames[] = { "offset", "plane", "search" };
 const char* const kUnderwaterModelNames[] = { "physical", "thesis" };
 const char* const kCausticsGatherNames[] = { "auto", "copy", "texture", "cpu" };
-const char* const kCausticsMethodNames[] = { "photons", "mesh", "procedural" };
+const char* const kCausticsMethodNames[] = { "photons", "mesh", "procedural", "procedural-screen" };
 
 template <typename E, size_t N>
 const char* nameOf(const char* const (&names)[N], E value)

@@ -109,6 +109,7 @@ REGISTER_OBJECT_WRAPPER(osgWater_WaterSettings, new osgWater::WaterSettings, osg
         ADD_ENUM_VALUE(CAUSTICS_PHOTONS);
         ADD_ENUM_VALUE(CAUSTICS_AREA_MESH);
         ADD_ENUM_VALUE(CAUSTICS_PROCEDURAL);
+        ADD_ENUM_VALUE(CAUSTICS_PROCEDURAL_SCREEN);
     END_ENUM_SERIALIZER();
     ADD_BOOL_SERIALIZER(CausticsSupersampling, false);
     ADD_BOOL_SERIALIZER(ReflectiveCaustics, false);

@@ -6,6 +6,7 @@
 #include <osgWater/PassCamera>
 #include <osgWater/SceneLighting>
 #include <osgWater/VirtualVertices>
+#include <osgWater/ProceduralCaustics>
 #include <osg/Material>
 #include <osg/Texture2D>
 #include <osg/Image>
@@ -73,10 +74,17 @@ WaterStateSets::WaterStateSets()
     _water->addUniform(new osg::Uniform("osgWater_SearchSteps", 3));
     _water->addUniform(new osg::Uniform("osgWater_IOR", osg::Vec2f(1.0f, 1.333f)));
     _water->addUniform(new osg::Uniform("osgWater_OneStep", osg::Vec2f(1.0f, 20.0f)));
-    // the refraction pass's virtual vertices follow the waves: the scene program shares their inputs
-    for (const char* u : { "osgWater_Waves", "osgWater_WavePhases", "osgWater_WaveCount", "osgWater_Level", "osgWater_IOR" })
+    // the procedural caustics' sun-and-halo map (the caustics texture's path and the scene program's)
+    const procedural::SunHalo halo;
+    _water->addUniform(new osg::Uniform("osgWater_SunHalo", osg::Vec3f(float(halo.discRadius), float(halo.haloRadius),
+                                                                        float(halo.haloLevel))));
+    // the refraction pass's virtual vertices and the procedural caustics made per pixel follow the
+    // waves: the scene program shares their inputs
+    for (const char* u : { "osgWater_Waves", "osgWater_WavePhases", "osgWater_WaveCount", "osgWater_Level", "osgWater_IOR",
+                           "osgWater_PhotonExtinction", "osgWater_FresnelQ", "osgWater_SunHalo" })
         _scene->addUniform(_water->getUniform(u));
     _scene->addUniform(new osg::Uniform("osgWater_MembraneCell", 1.0f));
+    _scene->addUniform(new osg::Uniform("osgWater_SunShade", int(UNIT_SUN_SHADE)));
     _water->addUniform(new osg::Uniform("osgWater_LookupPlanes", osg::Vec2f(1.0f, 1.0f)));
     _water->addUniform(new osg::Uniform("osgWater_WaterColor", osg::Vec3f()));
     _water->addUniform(new osg::Uniform("osgWater_SurfaceSquare", osg::Vec4f()));
@@ -133,6 +141,7 @@ void WaterStateSets::applySettings(const WaterSettings& s, const WaterSurface& s
     w->setDefine("OSGWATER_REFRACTION", std::to_string(int(s.getRefractionLookup()))); // the enum's numbers
     w->setDefine("OSGWATER_REFLECTION", std::to_string(int(s.getReflectionLookup()))); // the enum's numbers
     w->setDefine("OSGWATER_FRESNEL", std::to_string(int(s.getFresnelModel()))); // the enum's numbers
+    _scene->setDefine("OSGWATER_FRESNEL", std::to_string(int(s.getFresnelModel()))); // procedural caustics per pixel
     w->setDefine("OSGWATER_UNDERWATER", s.getUnderwaterModel() == WaterSettings::UNDERWATER_THESIS ? "1" : "0");
     // OSGWATER_NO_REFLECTION / OSGWATER_NO_REFRACTION follow what ran (ViewPasses), not the
     // settings; OSGWATER_ENVIRONMENT the map in use (setEnvironmentMap())

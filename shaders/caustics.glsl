@@ -3,6 +3,8 @@
 // the sun's irradiance) and the sun's depth map (shadows). Included only by passes that have
 // caustics (OSGWATER_CAUSTICS) or reflective caustics (OSGWATER_REFLECTED_CAUSTICS: the same for
 // the sun reflected off the water, with the fragment mirrored in the water plane).
+// OSGWATER_CAUSTICS_PROCEDURAL: no caustics texture, the procedural construction at the fragment's
+// own place (procedural.glsl, included first; OSGWATER_PROCEDURAL_SHADE: with the shade map).
 in float vAboveWater;
 
 #ifdef OSGWATER_CAUSTICS
@@ -16,6 +18,30 @@ in vec3 vSun;
 #ifdef OSGWATER_CAUSTICS_TILED
 in vec2 vTile;
 #endif
+#ifdef OSGWATER_CAUSTICS_PROCEDURAL
+in vec3 vLocal;
+uniform mat4 osgWater_SunView; // water-local -> the sun camera's eye space (the shade map's)
+
+// The procedural caustics at this fragment, as the caustics texture would hold them
+float owCausticsHere()
+{
+    vec3 exitPoint;
+    float light = owProceduralLight(vLocal, exitPoint);
+#ifdef OSGWATER_PROCEDURAL_SHADE
+    if (light > 0.0 && !owSunReaches((osgWater_SunView * vec4(exitPoint, 1.0)).xyz)) light = 0.0;
+#endif
+    return light;
+}
+#else
+float owCausticsHere()
+{
+#ifdef OSGWATER_CAUSTICS_TILED
+    return texture(osgWater_CausticsTex, vTile).r; // the tile repeats under all the water
+#else
+    return texture(osgWater_CausticsTex, vSun.xy).r;
+#endif
+}
+#endif
 
 // Share of the direct sun reaching a fragment per channel (1 above the water or without caustics).
 // Irradiance on a surface of normal n is C (n.L): C counts power per area seen from the sun. The
@@ -25,20 +51,16 @@ vec3 owUnderwaterSun(float ndl)
 {
     if (vAboveWater >= 0.0) return vec3(1.0);
     bool inMap = all(greaterThanEqual(vSun.xy, vec2(0.0))) && all(lessThanEqual(vSun.xy, vec2(1.0)));
-#ifdef OSGWATER_CAUSTICS_TILED
-    vec2 causticsAt = vTile; // the tile repeats under all the water; shadows where the depth map reaches
-#else
-    if (!inMap) return vec3(1.0);
-    vec2 causticsAt = vSun.xy;
+#ifndef OSGWATER_CAUSTICS_TILED
+    if (!inMap) return vec3(1.0); // a tile repeats; shadows where the depth map reaches
 #endif
     float tanSlope = sqrt(max(1.0 - ndl * ndl, 0.0)) / max(ndl, 0.1);
     float bias = osgWater_SunDepthBias.x + osgWater_SunDepthBias.y * tanSlope;
     if (inMap && vSun.z > texture(osgWater_SunDepth, vSun.xy).r + bias) return vec3(0.0);
 #ifdef OSGWATER_CAUSTICS_CHANNELS
-    return osgWater_CausticsIntensity * texture(osgWater_CausticsTex, causticsAt).r
-         * exp(osgWater_CausticsChannels * vAboveWater);
+    return osgWater_CausticsIntensity * owCausticsHere() * exp(osgWater_CausticsChannels * vAboveWater);
 #else
-    return vec3(osgWater_CausticsIntensity * texture(osgWater_CausticsTex, causticsAt).r);
+    return vec3(osgWater_CausticsIntensity * owCausticsHere());
 #endif
 }
 #endif

@@ -1,11 +1,12 @@
 #version 130
-#pragma import_defines(OSGWATER_FOG, OSGWATER_CAUSTICS, OSGWATER_CAUSTICS_CHANNELS, OSGWATER_CAUSTICS_TILED, OSGWATER_REFLECTED_CAUSTICS, OSGWATER_TRUE_POSITIONS)
+#pragma import_defines(OSGWATER_FOG, OSGWATER_CAUSTICS, OSGWATER_CAUSTICS_CHANNELS, OSGWATER_CAUSTICS_TILED, OSGWATER_CAUSTICS_PROCEDURAL, OSGWATER_PROCEDURAL_SHADE, OSGWATER_FRESNEL, OSGWATER_REFLECTED_CAUSTICS, OSGWATER_TRUE_POSITIONS)
 // Fixed-function look of the OBJ loader's geometry: material * texture, one sun + ambient, lit per
 // vertex (scene.vert). Variants by pass, never branches (a software rasteriser runs both sides):
 // - OSGWATER_CAUSTICS, where the pass can see below the water and caustics are on: under water the
 //   direct sun is the caustic irradiance of the photon pass (thesis ch. 8), and zero where the
 //   sun's depth map shows something between the fragment and the surface (underwater shadows);
 //   OSGWATER_CAUSTICS_TILED: the caustics of one tile, repeated (the depth map where it reaches);
+//   OSGWATER_CAUSTICS_PROCEDURAL: the procedural caustics made here, per fragment (procedural.glsl);
 // - OSGWATER_REFLECTED_CAUSTICS, where the pass sees above the water and reflective caustics are
 //   on: above the water the sun reflected off it adds its irradiance from the sun's mirror image;
 // - OSGWATER_FOG, where the pass's eye is under water: everything is seen through water, its
@@ -22,6 +23,15 @@ in vec2 vNdl;
 in vec3 vTrueLocal;
 #endif
 
+#ifdef OSGWATER_CAUSTICS_PROCEDURAL
+#define OSGWATER_ORTHO_DEPTH 1
+#pragma include "waves.glsl"
+#pragma include "optics.glsl"
+#pragma include "procedural.glsl"
+#ifdef OSGWATER_PROCEDURAL_SHADE
+#pragma include "sunshade.glsl"
+#endif
+#endif
 #if defined(OSGWATER_CAUSTICS) || defined(OSGWATER_REFLECTED_CAUSTICS)
 #pragma include "caustics.glsl"
 #endif

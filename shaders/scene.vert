@@ -1,5 +1,5 @@
 #version 130
-#pragma import_defines(OSGWATER_FOG, OSGWATER_CAUSTICS, OSGWATER_CAUSTICS_TILED, OSGWATER_REFLECTED_CAUSTICS, OSGWATER_VIRTUAL_VERTICES, OSGWATER_TRUE_POSITIONS)
+#pragma import_defines(OSGWATER_FOG, OSGWATER_CAUSTICS, OSGWATER_CAUSTICS_TILED, OSGWATER_REFLECTED_CAUSTICS, OSGWATER_CAUSTICS_PROCEDURAL, OSGWATER_VIRTUAL_VERTICES, OSGWATER_TRUE_POSITIONS)
 // The kit's program for the water's scene (the WaterNode's children): textured, lit by one sun,
 // and clipped by the pass plane so the reflection and refraction passes split the scene.
 // Lit per vertex like the fixed-function pipeline the OBJ loader's materials are made for: with
@@ -29,6 +29,12 @@ out vec3 vSun;
 #ifdef OSGWATER_CAUSTICS_TILED
 uniform mat4 osgWater_EyeToTile;  // eye space -> tile units (tileable caustics; the texture wraps)
 out vec2 vTile;
+#endif
+#if defined(OSGWATER_CAUSTICS_PROCEDURAL) || defined(OSGWATER_VIRTUAL_VERTICES)
+uniform mat4 osgWater_EyeToLocal; // this pass's eye space -> the water's local frame
+#endif
+#ifdef OSGWATER_CAUSTICS_PROCEDURAL
+out vec3 vLocal;                  // the fragment's place for the procedural caustics
 #endif
 #ifdef OSGWATER_REFLECTED_CAUSTICS
 uniform mat4 osgWater_EyeToReflectedSun; // eye space -> mirrored in the water plane -> the reflected sun's texture space
@@ -66,6 +72,9 @@ void main()
 #ifdef OSGWATER_CAUSTICS_TILED
     vTile = (osgWater_EyeToTile * eye).xy;
 #endif
+#ifdef OSGWATER_CAUSTICS_PROCEDURAL
+    vLocal = (osgWater_EyeToLocal * eye).xyz;
+#endif
 #ifdef OSGWATER_REFLECTED_CAUSTICS
     float ndlR = l2 > 1e-20 ? dot(n, osgWater_ReflectedSunEye) * inversesqrt(l2) : 0.0;
     vNdlR = vec2(max(ndlR, 0.0), max(-ndlR, 0.0));
@@ -76,9 +85,9 @@ void main()
 #endif
     gl_ClipDistance[0] = dot(osgWater_ClipPlane, eye);
 #ifdef OSGWATER_VIRTUAL_VERTICES
-    vec3 trueLocal = (osgWater_PassEyeToLocal * eye).xyz / (osgWater_PassEyeToLocal * eye).w;
-    vec3 eyeLocal = osgWater_PassEyeToLocal[3].xyz / osgWater_PassEyeToLocal[3].w;
-    gl_Position = gl_ProjectionMatrix * (osgWater_PassLocalToEye * vec4(vvVirtualVertex(eyeLocal, trueLocal), 1.0));
+    vec3 trueLocal = (osgWater_EyeToLocal * eye).xyz;
+    vec3 eyeLocal = osgWater_EyeToLocal[3].xyz;
+    gl_Position = gl_ProjectionMatrix * (osgWater_LocalToEye * vec4(vvVirtualVertex(eyeLocal, trueLocal), 1.0));
 #ifdef OSGWATER_TRUE_POSITIONS
     vTrueLocal = trueLocal;
 #endif

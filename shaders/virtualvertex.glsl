@@ -18,8 +18,7 @@
 
 uniform vec2 osgWater_IOR;              // (air, water)
 uniform float osgWater_MembraneCell;    // the membrane's facets, metres across
-uniform mat4 osgWater_PassEyeToLocal;   // this pass's eye space -> the water's local frame
-uniform mat4 osgWater_PassLocalToEye;
+uniform mat4 osgWater_LocalToEye;       // the water's local frame -> this pass's eye space
 
 vec3 vvUnitOr(vec3 v, vec3 fallback)
 {

@@ -195,7 +195,7 @@ TEST(BadValues, EnumsThatNameNoModelFallBackToTheDefaultWithOneWarning)
         { "underwaterModel", [](WaterSettings& s, int v) { s.setUnderwaterModel(WaterSettings::UnderwaterModel(v)); return int(s.getUnderwaterModel()); }, 1, 0 },
         { "waterModel", [](WaterSettings& s, int v) { s.setWaterModel(WaterSettings::WaterModel(v)); return int(s.getWaterModel()); }, 1, 0 },
         { "causticsGather", [](WaterSettings& s, int v) { s.setCausticsGather(WaterSettings::CausticsGather(v)); return int(s.getCausticsGather()); }, 3, 0 },
-        { "causticsMethod", [](WaterSettings& s, int v) { s.setCausticsMethod(WaterSettings::CausticsMethod(v)); return int(s.getCausticsMethod()); }, 2, 0 },
+        { "causticsMethod", [](WaterSettings& s, int v) { s.setCausticsMethod(WaterSettings::CausticsMethod(v)); return int(s.getCausticsMethod()); }, 3, 0 },
     };
     for (const EnumSetting& e : enums)
         for (int v : { INT_MIN, -1, 0, 1, e.last, e.last + 1, 1000, INT_MAX }) {

@@ -77,6 +77,7 @@ struct Group {
     int gather;       // -1 caustics off, else a CausticsGather
     bool areaMesh;    // the caustics by the area-ratio mesh (else photon splatting), supersampled every other time
     bool procedural;  // the caustics by the procedural construction (no photons)
+    bool perPixel;    // with it, the screen-space variant
     bool reflective;  // reflective caustics too
     float tile;       // tileable caustics' tile (0: off)
     bool environment; // the environment cube map (drawn from the scene)
@@ -124,6 +125,7 @@ std::vector<Group> groups()
         x.gather = pick(gathers, i / 2);
         x.areaMesh = i % 4 >= 2; // with every gather (which changes every other group)
         x.procedural = !x.areaMesh && i % 8 == 1;
+        x.perPixel = x.procedural && i % 16 == 9;
         x.reflective = i % 5 == 2;
         x.tile = i % 7 == 4 ? 3.0f : 0.0f;
         x.environment = i % 6 == 3;
@@ -181,7 +183,7 @@ std::string describe(const Group& g, const Config& c)
       << (g.steps ? (g.bracketed ? "bracketed " : g.virtualVertices ? "virtual vertices " : "iterative ") + std::to_string(g.steps)
                   : std::string(g.planeLookups ? "plane" : "one-step"))
       << (g.planeLookups ? ", plane reflection" : g.offsetReflection ? ", offset reflection" : ", reflection search")
-      << ", fresnel " << g.fresnel << ", underwater " << g.underwater << ", gather " << g.gather << (g.areaMesh ? " (mesh)" : "") << (g.procedural ? " (procedural)" : "") << (g.reflective ? " (reflective)" : "") << (g.tile > 0.0f ? " (tiled)" : "") << (g.environment ? ", environment map" : "") << ", textures "
+      << ", fresnel " << g.fresnel << ", underwater " << g.underwater << ", gather " << g.gather << (g.areaMesh ? " (mesh)" : "") << (g.procedural ? (g.perPixel ? " (procedural per pixel)" : " (procedural)") : "") << (g.reflective ? " (reflective)" : "") << (g.tile > 0.0f ? " (tiled)" : "") << (g.environment ? ", environment map" : "") << ", textures "
       << g.textureSize << ", photons " << g.photonGrid << ", viewport " << g.viewport << ", rotation " << g.rotation
       << (g.rotation && !g.apparentEye ? " (thesis)" : "")
       << ", glow " << g.glow << ", debug " << g.debug << "; eye height " << c.eyeHeight << ", pitch " << c.pitch
@@ -204,7 +206,8 @@ void apply(WaterNode* water, const Group& g)
     s->setCausticsEnabled(g.gather >= 0);
     if (g.gather >= 0) s->setCausticsGather(WaterSettings::CausticsGather(g.gather));
     s->setCausticsMethod(g.areaMesh ? WaterSettings::CAUSTICS_AREA_MESH
-                         : g.procedural ? WaterSettings::CAUSTICS_PROCEDURAL : WaterSettings::CAUSTICS_PHOTONS);
+                         : g.procedural ? (g.perPixel ? WaterSettings::CAUSTICS_PROCEDURAL_SCREEN : WaterSettings::CAUSTICS_PROCEDURAL)
+                                        : WaterSettings::CAUSTICS_PHOTONS);
     s->setCausticsSupersampling(g.areaMesh && g.steps % 2 == 1);
     s->setReflectiveCaustics(g.reflective);
     s->setCausticsTileSize(g.tile);

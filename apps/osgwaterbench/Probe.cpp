@@ -121,7 +121,8 @@ Estimate Probe::capture(osgWater::WaterNode& water, double t)
 osg::ref_ptr<osg::Image> Probe::readCaustics(osgWater::WaterNode& water)
 {
     osgWater::CausticsCamera* c = water.getCausticsCamera();
-    if (!c || !water.getSettings()->getCausticsEnabled()) return nullptr;
+    // per pixel (procedural) the caustics are made in the scene program: no texture holds them
+    if (!c || !water.getSettings()->getCausticsEnabled() || c->getLighting().procedural) return nullptr;
     osg::ref_ptr<osg::Image> img = read(c->getCausticsTexture());
     const float scale = c->getGather()->getValueScale(); // 16-bit targets store value / scale
     if (img.valid() && scale != 1.0f)

@@ -51,6 +51,7 @@ std::vector<Technique> allTechniques()
     t.push_back({ "caustics-photons-halved", [](WaterSettings& s) { s.setPhotonGridSize(s.getPhotonGridSize() / 2); } });
     t.push_back({ "caustics-mesh", [](WaterSettings& s) { s.setCausticsMethod(WaterSettings::CAUSTICS_AREA_MESH); } });
     t.push_back({ "caustics-procedural", [](WaterSettings& s) { s.setCausticsMethod(WaterSettings::CAUSTICS_PROCEDURAL); } });
+    t.push_back({ "caustics-procedural-screen", [](WaterSettings& s) { s.setCausticsMethod(WaterSettings::CAUSTICS_PROCEDURAL_SCREEN); } });
     t.push_back({ "caustics-mesh-supersampled", [](WaterSettings& s) {
                      s.setCausticsMethod(WaterSettings::CAUSTICS_AREA_MESH);
                      s.setCausticsSupersampling(true);

@@ -148,7 +148,7 @@ bool LakeOptions::read(osg::ArgumentParser& args)
     if (!readEnumOption(args, "--gather", "auto|copy|texture|cpu", WaterSettings::causticsGatherFromName,
                         &WaterSettings::setCausticsGather, _setters))
         return false;
-    if (!readEnumOption(args, "--caustics", "photons|mesh|procedural", WaterSettings::causticsMethodFromName,
+    if (!readEnumOption(args, "--caustics", "photons|mesh|procedural|procedural-screen", WaterSettings::causticsMethodFromName,
                         &WaterSettings::setCausticsMethod, _setters))
         return false;
     if (args.read("--supersample")) _setters.push_back([](WaterSettings& w) { w.setCausticsSupersampling(true); });

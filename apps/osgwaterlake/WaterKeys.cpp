@@ -44,8 +44,8 @@ bool WaterKeys::handle(const osgGA::GUIEventAdapter& ea, osgGA::GUIActionAdapter
     case 'g': // auto -> copy -> texture -> cpu -> auto
         s.setCausticsGather(WaterSettings::CausticsGather((int(s.getCausticsGather()) + 1) % 4));
         return true;
-    case 'a': // photons -> area-ratio mesh -> procedural -> photons
-        s.setCausticsMethod(WaterSettings::CausticsMethod((int(s.getCausticsMethod()) + 1) % 3));
+    case 'a': // photons -> area-ratio mesh -> procedural (texture) -> procedural (per pixel) -> photons
+        s.setCausticsMethod(WaterSettings::CausticsMethod((int(s.getCausticsMethod()) + 1) % (WaterSettings::CAUSTICS_PROCEDURAL_SCREEN + 1)));
         return true;
     case 'x': s.setCausticsSupersampling(!s.getCausticsSupersampling()); return true;
     case 'y': s.setReflectiveCaustics(!s.getReflectiveCaustics()); return true;
@@ -99,7 +99,7 @@ void WaterKeys::getUsage(osg::ApplicationUsage& u) const
     u.addKeyboardMouseBinding("o", "Next refraction camera (apparent eye, the thesis's rotation, not rotated)");
     u.addKeyboardMouseBinding("k", "Toggle caustics");
     u.addKeyboardMouseBinding("g", "Next caustics gather (auto, copy, texture, CPU)");
-    u.addKeyboardMouseBinding("a", "Switch caustics method (photon splatting / area-ratio mesh)");
+    u.addKeyboardMouseBinding("a", "Next caustics method (photon splatting, area-ratio mesh, procedural in a texture, procedural per pixel)");
     u.addKeyboardMouseBinding("x", "Toggle caustics 2x2 supersampling");
     u.addKeyboardMouseBinding("y", "Toggle reflective caustics (the sun reflected onto what stands above the water)");
     u.addKeyboardMouseBinding("v", "Toggle the environment cube map");

@@ -51,7 +51,7 @@ std::string checkSettings(const osgWater::WaterSettings& s)
     auto outside = [](int v, int last) { return v < 0 || v > last; };
     if (outside(s.getFresnelModel(), W::FRESNEL_RECIPROCAL) || outside(s.getRefractionLookup(), W::VIRTUAL_VERTICES) ||
         outside(s.getReflectionLookup(), W::REFLECTION_SEARCH) || outside(s.getCausticsGather(), W::GATHER_CPU) ||
-        outside(s.getCausticsMethod(), W::CAUSTICS_PROCEDURAL) || outside(s.getUnderwaterModel(), W::UNDERWATER_THESIS))
+        outside(s.getCausticsMethod(), W::CAUSTICS_PROCEDURAL_SCREEN) || outside(s.getUnderwaterModel(), W::UNDERWATER_THESIS))
         return "an enum setting holds a value it does not define";
     if (s.getSearchSteps() < 1 || s.getReflectionTextureSize() < 1 || s.getRefractionTextureSize() < 1 ||
         s.getCausticsResolution() < 1 || s.getPhotonGridSize() < 1 || s.getEnvironmentMapSize() < 1)
