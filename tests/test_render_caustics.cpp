@@ -243,11 +243,7 @@ TEST(RenderCaustics, ProceduralCausticsOverASineWaveAreTheirCpuMirrorsTexelByTex
     for (const osg::Vec3 sun : { osg::Vec3(0, 0, 1), osg::Vec3(0.5f, 0.2f, 0.85f) }) {
         CausticsScene sc(8.0f, 256, 64, sun, -2.0f);
         REQUIRE_GL(sc.h);
-        Wave w;
-        w.direction.set(1.0f, 0.0f);
-        w.wavelength = 2.0f;
-        w.amplitude = 0.03f;
-        sc.water->getSurface()->setWaves({ w });
+        sc.water->getSurface()->setWaves({ makeWave(1, 0, 2.0f, 0.03f) });
         sc.water->getSettings()->setCausticsMethod(WaterSettings::CAUSTICS_PROCEDURAL);
         osg::ref_ptr<osg::Image> img = sc.render();
         ASSERT_TRUE(img.valid()) << "no caustics pass ran";
@@ -281,6 +277,66 @@ TEST(RenderCaustics, ProceduralCausticsOverASineWaveAreTheirCpuMirrorsTexelByTex
     }
 }
 
+TEST(RenderCaustics, ProceduralCausticsPerPixelAreTheConstructionAtEachFragmentsOwnPlace)
+{
+    // the paper's screen-space variant: no photon or gather pass, the scene program makes the light
+    // per fragment. The bed (lit, white, no ambient) seen in the refraction pass: on flat water n.l
+    // times the calibrated (1 - F) exp(-k d); over one 2 m wave, 3 cm high, every texel whose bed
+    // point lies on the water against the CPU construction at that point, times n.l
+    for (const bool wave : { false, true }) {
+        const osg::Vec3 sun = osg::Vec3(0.5f, 0.2f, 0.85f);
+        CausticsScene sc(8.0f, 256, 64, sun, -2.0f);
+        REQUIRE_GL(sc.h);
+        if (wave) sc.water->getSurface()->setWaves({ makeWave(1, 0, 2.0f, 0.03f) });
+        sc.water->getSettings()->setCausticsMethod(WaterSettings::CAUSTICS_PROCEDURAL_SCREEN);
+        sc.lightTheBed(8.0f);
+        sc.h.frame(1.0);
+        sc.h.frame(1.0);
+        const PassPlan plan = sc.water->getPassPlan(sc.h.camera());
+        EXPECT_FALSE(plan.runs(PASS_PHOTONS) || plan.runs(PASS_GATHER)) << plan.describe();
+        EXPECT_TRUE(sc.water->getCausticsCamera()->getLighting().procedural);
+
+        RefractionCamera* rc = sc.water->getViewPasses(sc.h.camera())->getRefractionCamera();
+        osg::ref_ptr<osg::Image> img = sc.h.readTexture(rc->getColorTexture());
+        ASSERT_TRUE(img.valid());
+        const osg::Matrixd inv = osg::Matrixd::inverse(rc->getViewMatrix() * rc->getProjectionMatrix());
+        osg::Vec3 L = sun;
+        L.normalize();
+        const glm::dvec3 towardsSun(L.x(), L.y(), L.z());
+        const double transmitted = 1.0 - optics::fresnelSchlick(L.z(), optics::normalReflectance(1.0f, 1.333f), 5.0f);
+        int n = 0, off = 0, lit = 0;
+        for (int j = 0; j < img->t(); ++j)
+            for (int i = 0; i < img->s(); ++i) {
+                const double x = (i + 0.5) / img->s() * 2 - 1, y = (j + 0.5) / img->t() * 2 - 1;
+                const osg::Vec3d a = osg::Vec3d(x, y, -1) * inv, b = osg::Vec3d(x, y, 1) * inv;
+                const osg::Vec3d p = a + (b - a) * ((-2.0 - a.z()) / (b.z() - a.z()));
+                if (std::fabs(p.x()) > 3 || std::fabs(p.y()) > 3) continue; // the backward ray stays on the water
+                const double cpu = L.z() * (wave ? procedural::causticLight(procedural::backtrace(glm::dvec3(p.x(), p.y(), p.z()), towardsSun,
+                                                                                                 *sc.water->getSurface(), 1.0, 1.0, 1.333),
+                                                                             transmitted, kK)
+                                                 : flatIrradiance(L.z(), 2.0));
+                const double gpu = pixel(img.get(), i, j)[0];
+                ++n;
+                lit += gpu > 0.5 * L.z() * flatIrradiance(L.z(), 2.0);
+                // tolerance: 0.02 (the 8-bit target, and the disc's rim, where the light steps)
+                off += std::fabs(gpu - cpu) > 0.02;
+            }
+        std::printf("per pixel, %s: %d texels, %d lit, %d off by 0.02\n", wave ? "one wave" : "flat", n, lit, off);
+        ASSERT_GT(n, 3000);
+        if (wave) EXPECT_GT(lit, n / 100) << "the lines are lit";
+        EXPECT_LE(off, n / 50) << (wave ? "wave" : "flat") << ": " << off << " of " << n << " texels off";
+    }
+    // with reflective caustics, whose passes run anyway: into the texture, the photon pass empty
+    CausticsScene sc(8.0f, 256, 64, osg::Vec3(0.5f, 0.2f, 0.85f), -2.0f);
+    REQUIRE_GL(sc.h);
+    sc.water->addChild(litQuad(3.0f, -1.0f, 3.5f, 1.0f, 1.0f)); // something above the water to light
+    sc.water->getSettings()->setCausticsMethod(WaterSettings::CAUSTICS_PROCEDURAL_SCREEN);
+    sc.water->getSettings()->setReflectiveCaustics(true);
+    sc.h.frame(1.0);
+    EXPECT_FALSE(sc.water->getCausticsCamera()->getLighting().procedural);
+    EXPECT_TRUE(sc.water->getPassPlan(sc.h.camera()).runs(PASS_GATHER)) << sc.water->getPassPlan(sc.h.camera()).describe();
+}
+
 TEST(RenderCaustics, TheCausticsTextureHasMipmapsOfItsOwnTexelsEveryFrame)
 {
     // the procedural caustics' paper mipmaps its texture against aliasing (and so do the other
@@ -288,11 +344,7 @@ TEST(RenderCaustics, TheCausticsTextureHasMipmapsOfItsOwnTexelsEveryFrame)
     // (the waves move), and it is read through the mipmaps
     CausticsScene sc(8.0f, 256, 64, osg::Vec3(0.3f, 0.2f, 0.93f), -2.0f);
     REQUIRE_GL(sc.h);
-    Wave w;
-    w.direction.set(1.0f, 0.0f);
-    w.wavelength = 2.0f;
-    w.amplitude = 0.03f;
-    sc.water->getSurface()->setWaves({ w });
+    sc.water->getSurface()->setWaves({ makeWave(1, 0, 2.0f, 0.03f) });
     sc.water->getSettings()->setCausticsMethod(WaterSettings::CAUSTICS_PROCEDURAL);
     for (double t : { 1.0, 1.7 }) {
         sc.h.frame(t);

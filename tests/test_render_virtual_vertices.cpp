@@ -167,11 +167,7 @@ TEST(RenderVirtualVertices, OverAGentleWaveEachShownPointIsWhereTheCpuMirrorPuts
     // one long wave (6 m, 5 cm: no zones of convergence at this depth): the membrane's facets are
     // an eighth of its length; the CPU mirror builds the same facets, grid-aligned, with the same
     // analytic normals at their vertices
-    Wave w;
-    w.direction = osg::Vec2(0.6f, 0.8f);
-    w.wavelength = 6.0f;
-    w.amplitude = 0.05f;
-    VirtualScene sc({ w });
+    VirtualScene sc({ makeWave(0.6f, 0.8f, 6.0f, 0.05f) });
     REQUIRE_GL(sc.h);
     sc.water->setDebugOutput(DEBUG_BOTTOM_HIT);
     sc.h.frame(0.0);
