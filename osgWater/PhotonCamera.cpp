@@ -57,10 +57,7 @@ void PhotonCamera::setSun(osg::Node* surface, const osg::Matrixd& view, const os
 
 void PhotonCamera::setSunShade(osg::Texture2D* shade, const osg::Matrixd& projection)
 {
-    setOrAddUniform(_photonState.get(), "osgWater_SunShade", int(UNIT_SUN_DEPTH));
-    setOrAddUniform(_photonState.get(), "osgWater_SunShadeProj", osg::Matrixf(projection));
-    setOrAddUniform(_photonState.get(), "osgWater_SunShadeInvProj", osg::Matrixf(osg::Matrixd::inverse(projection)));
-    _photonState->setTextureAttribute(UNIT_SUN_DEPTH, shade);
+    applySunShade(_photonState.get(), shade, UNIT_SUN_DEPTH, projection);
 }
 
 void PhotonCamera::setTile(osg::Node* surface, const osg::Matrixd& view, const osg::Matrixd& projection,

@@ -204,12 +204,7 @@ void PhotonGather::setProceduralSun(const osg::Matrixd& texToLocal, const osg::M
     setOrAddUniform(ss, "osgWater_SunView", osg::Matrixf(sunView));
     setOrAddUniform(ss, "osgWater_TowardsSunLocal", towardsSun);
     setDefineIf(ss, "OSGWATER_PROCEDURAL_SHADE", shade != nullptr);
-    if (shade) {
-        ss->setTextureAttribute(UNIT_SUN_DEPTH, shade);
-        setOrAddUniform(ss, "osgWater_SunShade", int(UNIT_SUN_DEPTH));
-        setOrAddUniform(ss, "osgWater_SunShadeProj", osg::Matrixf(shadeProjection));
-        setOrAddUniform(ss, "osgWater_SunShadeInvProj", osg::Matrixf(osg::Matrixd::inverse(shadeProjection)));
-    }
+    if (shade) applySunShade(ss, shade, UNIT_SUN_DEPTH, shadeProjection);
 }
 
 osg::Group* PhotonGather::makePath(const PathKey& key)

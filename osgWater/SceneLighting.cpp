@@ -60,10 +60,8 @@ void osgWater::applySceneLighting(osg::StateSet* ss, const SceneLighting& l, con
     setDefineIf(ss, "OSGWATER_PROCEDURAL_SHADE", procedural && c->shade.valid());
     setOrAddUniform(ss, "osgWater_TowardsSunLocal", l.towardsSun);
     setOrAddUniform(ss, "osgWater_SunView", procedural ? osg::Matrixf(c->sunView) : osg::Matrixf());
-    setOrAddUniform(ss, "osgWater_SunShadeProj", procedural ? osg::Matrixf(c->shadeProjection) : osg::Matrixf());
-    setOrAddUniform(ss, "osgWater_SunShadeInvProj",
-                    procedural ? osg::Matrixf(osg::Matrixd::inverse(c->shadeProjection)) : osg::Matrixf());
-    setTextureIf(ss, UNIT_SUN_SHADE, procedural ? c->shade.get() : nullptr);
+    if (procedural && c->shade.valid()) applySunShade(ss, c->shade.get(), UNIT_SUN_SHADE, c->shadeProjection);
+    else setTextureIf(ss, UNIT_SUN_SHADE, nullptr);
 
     // the reflected sun: from the sun's mirror image under the water
     const CausticsLighting* r = l.reflectedCaustics;
@@ -76,6 +74,14 @@ void osgWater::applySceneLighting(osg::StateSet* ss, const SceneLighting& l, con
     setOrAddUniform(ss, "osgWater_ReflectedDepthBias", r ? r->depthBias : osg::Vec2f(0.0f, 0.0f));
     setTextureIf(ss, UNIT_REFLECTED_CAUSTICS, r ? r->caustics.get() : nullptr);
     setTextureIf(ss, UNIT_REFLECTED_SUN_DEPTH, r ? r->depth.get() : nullptr);
+}
+
+void osgWater::applySunShade(osg::StateSet* ss, osg::Texture2D* shade, int unit, const osg::Matrixd& projection)
+{
+    ss->setTextureAttribute(unit, shade);
+    setOrAddUniform(ss, "osgWater_SunShade", unit);
+    setOrAddUniform(ss, "osgWater_SunShadeProj", osg::Matrixf(projection));
+    setOrAddUniform(ss, "osgWater_SunShadeInvProj", osg::Matrixf(osg::Matrixd::inverse(projection)));
 }
 
 float osgWater::photonExtinction(const WaterSettings& s) { return s.getSunExtinction().y(); }

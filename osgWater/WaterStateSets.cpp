@@ -84,7 +84,6 @@ WaterStateSets::WaterStateSets()
                            "osgWater_PhotonExtinction", "osgWater_FresnelQ", "osgWater_SunHalo" })
         _scene->addUniform(_water->getUniform(u));
     _scene->addUniform(new osg::Uniform("osgWater_MembraneCell", 1.0f));
-    _scene->addUniform(new osg::Uniform("osgWater_SunShade", int(UNIT_SUN_SHADE)));
     _water->addUniform(new osg::Uniform("osgWater_LookupPlanes", osg::Vec2f(1.0f, 1.0f)));
     _water->addUniform(new osg::Uniform("osgWater_WaterColor", osg::Vec3f()));
     _water->addUniform(new osg::Uniform("osgWater_SurfaceSquare", osg::Vec4f()));
