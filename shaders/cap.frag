@@ -1,5 +1,4 @@
 #version 130
-#pragma import_defines(OSGWATER_GRID, OSGWATER_EYE_BELOW, OSGWATER_REFRACTION, OSGWATER_REFLECTION, OSGWATER_FRESNEL, OSGWATER_UNDERWATER, OSGWATER_NO_REFLECTION, OSGWATER_NO_REFRACTION, OSGWATER_SEARCH_STEPS, OSGWATER_ENVIRONMENT, OSGWATER_DEBUG)
 // The near-plane cap. Where the near plane lies on the other side of the surface than the eye,
 // the eye's ray met the surface before the near plane, which clipped that bit of surface away:
 // without this the frame would show the scene behind it untinted, or the clear colour. Here the

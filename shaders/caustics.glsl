@@ -9,8 +9,8 @@ in float vAboveWater;
 
 #ifdef OSGWATER_CAUSTICS
 uniform float osgWater_CausticsIntensity;
-uniform sampler2D osgWater_CausticsTex;  // unit 4
-uniform sampler2D osgWater_SunDepth;     // unit 5
+uniform sampler2D osgWater_CausticsTex;
+uniform sampler2D osgWater_SunDepth;
 uniform vec2 osgWater_SunDepthBias;      // depth bias: constant + per unit of slope tangent
 uniform vec3 osgWater_CausticsChannels;  // per-channel sun extinction beyond the photons', per metre of depth
 
@@ -67,8 +67,8 @@ vec3 owUnderwaterSun(float ndl)
 
 #ifdef OSGWATER_REFLECTED_CAUSTICS
 uniform float osgWater_ReflectedIntensity;
-uniform sampler2D osgWater_ReflectedCausticsTex; // unit 7
-uniform sampler2D osgWater_ReflectedSunDepth;    // unit 8: the scene above the water, mirrored
+uniform sampler2D osgWater_ReflectedCausticsTex;
+uniform sampler2D osgWater_ReflectedSunDepth;    // the scene above the water, mirrored
 uniform vec2 osgWater_ReflectedDepthBias;
 in vec3 vSunR;
 in vec2 vNdlR; // n.l of the front and back faces for the sun's mirror image

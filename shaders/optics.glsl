@@ -1,7 +1,8 @@
-// Optics of the water shader. Mirrored line by line in osgWater/Optics.cpp (same names, same
+// Optics of the water shader. Mirrored line by line in src/osgWater/optics/Optics.cpp (same names, same
 // guards); tests hold both to the same numbers. Robust by construction: refract() returns 0 under
 // total internal reflection (a mask, never normalised), every division is guarded, depth 1.0 is
 // sky (a miss, not a bottom).
+#pragma include "contract.glsl"
 
 vec3 owSafeNormalize(vec3 v, vec3 fallback)
 {
@@ -49,11 +50,11 @@ float owFresnelExact(float cosI, float n1, float n2)
 // OSGWATER_FRESNEL in its import_defines.
 float owFresnel(float cosE, float n1, float n2, float q)
 {
-#if defined(OSGWATER_FRESNEL) && OSGWATER_FRESNEL == 3
+#if defined(OSGWATER_FRESNEL) && OSGWATER_FRESNEL == OSGWATER_FRESNEL_RECIPROCAL
     return owFresnelReciprocal(cosE, q);
-#elif defined(OSGWATER_FRESNEL) && OSGWATER_FRESNEL == 2
+#elif defined(OSGWATER_FRESNEL) && OSGWATER_FRESNEL == OSGWATER_FRESNEL_EXACT
     return owFresnelExact(cosE, n1, n2);
-#elif defined(OSGWATER_FRESNEL) && OSGWATER_FRESNEL == 1
+#elif defined(OSGWATER_FRESNEL) && OSGWATER_FRESNEL == OSGWATER_FRESNEL_POWER
     return owFresnelPower(cosE, q);
 #else
     float r = (n1 - n2) / (n1 + n2);

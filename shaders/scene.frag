@@ -13,7 +13,7 @@
 //   colour blended towards the water colour by the distance from this pass's eye (eq. 10);
 // - OSGWATER_TRUE_POSITIONS, the refraction pass drawing virtual vertices for the debug output:
 //   the fragment's true place in the water's local frame (a float target), alpha 1.
-uniform sampler2D osgWater_BaseTexture; // unit 0; a white texel when the geometry has none
+uniform sampler2D osgWater_BaseTexture; // a white texel when the geometry has none
 
 in vec2 vTexCoord;
 in vec4 vUnlit;

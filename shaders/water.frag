@@ -1,5 +1,4 @@
 #version 130
-#pragma import_defines(OSGWATER_GRID, OSGWATER_EYE_BELOW, OSGWATER_REFRACTION, OSGWATER_REFLECTION, OSGWATER_FRESNEL, OSGWATER_UNDERWATER, OSGWATER_NO_REFLECTION, OSGWATER_NO_REFRACTION, OSGWATER_SEARCH_STEPS, OSGWATER_ENVIRONMENT, OSGWATER_DEBUG)
 // The water surface (thesis ch. 7, §9.1): shaded by watershade.glsl where the fragment's line of
 // sight meets the surface (the analytic waves over the built-in mesh, the mesh itself otherwise).
 // Everything is in the WaterNode's local frame (z up) unless it says eye space.

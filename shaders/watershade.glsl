@@ -2,25 +2,21 @@
 // refraction by bottom search in the refraction pass's depth texture, reflection by the same search
 // in the reflection pass's (or the thesis's lookup W = U + c R), depth attenuation, Fresnel, final
 // mix (eq. 9). Shared by the surface (water.frag) and the near-plane cap (cap.frag), which shades the
-// surface where the near plane cut it away. The includer lists OSGWATER_EYE_BELOW,
-// OSGWATER_REFRACTION, OSGWATER_REFLECTION, OSGWATER_FRESNEL,
-// OSGWATER_UNDERWATER, OSGWATER_NO_REFLECTION, OSGWATER_NO_REFRACTION, OSGWATER_SEARCH_STEPS,
-// OSGWATER_ENVIRONMENT, OSGWATER_DEBUG in its import_defines. OSGWATER_ENVIRONMENT: the
-// surroundings above the water in a cube map (local frame), read along rays the pass textures do
-// not hold.
-// Debug output (OSGWATER_DEBUG, see osgWater::DebugOutput), alpha says what rgb holds:
-//   2 a point (local frame), 3 a direction (local frame), 4 the point shown itself (virtual
-//   vertices: the true place of what the pass drew there), -1 nothing found, -2 total internal reflection;
-//   1: the refraction estimate W (the point whose colour is fetched), 2: the reflection lookup
-//   point (or direction), 3: r = the Fresnel weight F. The eye's side is a define
-// (set per view), not a uniform: a software rasteriser runs both sides of a branch.
+// surface where the near plane cut it away; the defines it switches on are listed once, here.
+// OSGWATER_ENVIRONMENT: the surroundings above the water in a cube map (local frame), read along
+// rays the pass textures do not hold.
+// Debug output (OSGWATER_DEBUG, one of the OSGWATER_DEBUG_* of contract.glsl): alpha says what rgb
+// holds (see osgWater::DebugOutput). The eye's side is a define (set per view), not a uniform: a
+// software rasteriser runs both sides of a branch.
+#pragma import_defines(OSGWATER_GRID, OSGWATER_EYE_BELOW, OSGWATER_REFRACTION, OSGWATER_REFLECTION, OSGWATER_FRESNEL, OSGWATER_UNDERWATER, OSGWATER_NO_REFLECTION, OSGWATER_NO_REFRACTION, OSGWATER_SEARCH_STEPS, OSGWATER_ENVIRONMENT, OSGWATER_DEBUG)
+#pragma include "contract.glsl"
 #pragma include "optics.glsl"
 
-uniform sampler2D osgWater_ReflectionTex;   // unit 1
-uniform sampler2D osgWater_RefractionTex;   // unit 2
+uniform sampler2D osgWater_ReflectionTex;
+uniform sampler2D osgWater_RefractionTex;
 uniform vec3 osgWater_EyeLocal;
 uniform mat4 osgWater_ReflectionMVP;        // local -> reflection pass clip space
-uniform sampler2D osgWater_ReflectionDepth; // unit 9
+uniform sampler2D osgWater_ReflectionDepth;
 uniform mat4 osgWater_ReflectionView;       // local -> reflection pass eye space (the mirror in it)
 uniform mat4 osgWater_ReflectionViewInverse;
 uniform mat4 osgWater_ReflectionProj;
@@ -40,7 +36,7 @@ uniform float osgWater_UnderwaterScale;     // m of eq. 13, 15
 uniform vec2 osgWater_LookupPlanes;         // plane-offset lookups: (height above the level, depth below it)
 
 #ifdef OSGWATER_ENVIRONMENT
-uniform samplerCube osgWater_EnvironmentTex; // unit 6
+uniform samplerCube osgWater_EnvironmentTex;
 #endif
 
 vec3 owSampleProjected(sampler2D tex, mat4 mvp, vec4 P, vec3 fallback)
@@ -82,7 +78,7 @@ vec4 owPlanePoint(vec3 U, vec3 D, float planeZ)
 // sky along its direction).
 owBottomHit owRefractionSearch(vec3 u1, vec3 R1)
 {
-#if defined(OSGWATER_REFRACTION) && OSGWATER_REFRACTION == 3
+#if defined(OSGWATER_REFRACTION) && OSGWATER_REFRACTION == OSGWATER_REFRACTION_BRACKETED
     return owMirrorSearch(osgWater_RefractionDepth, owRefractionPass(), u1, R1, osgWater_SearchSteps,
                           osgWater_SearchTolerance);
 #else
@@ -108,14 +104,14 @@ vec3 owRefractedFromAbove(vec3 U, vec3 R, out vec4 debugHit)
     debugHit = vec4(0.0, 0.0, 0.0, -1.0);
     vec3 u1 = (osgWater_RefractionView * vec4(U, 1.0)).xyz;
     vec3 R1 = normalize(mat3(osgWater_RefractionView) * R); // unit in that eye space, scaled or not
-#if defined(OSGWATER_REFRACTION) && OSGWATER_REFRACTION == 2
+#if defined(OSGWATER_REFRACTION) && OSGWATER_REFRACTION == OSGWATER_REFRACTION_PLANE
     // the refracted ray's hit on the plane below the level (a wave's trough under the plane: U)
     vec4 P = owPlanePoint(U, R, osgWater_Level - osgWater_LookupPlanes.y);
     vec3 p1 = (osgWater_RefractionView * vec4(P.w > 0.5 ? P.xyz : U, 1.0)).xyz;
     owBottomHit hit = owBottomHit(true, p1, p1, 0.0);
-#elif defined(OSGWATER_REFRACTION) && OSGWATER_REFRACTION == 0
+#elif defined(OSGWATER_REFRACTION) && OSGWATER_REFRACTION == OSGWATER_REFRACTION_ONE_STEP
     owBottomHit hit = owOneStepSearch(u1, R1, osgWater_OneStep.x, osgWater_OneStep.y);
-#elif defined(OSGWATER_REFRACTION) && OSGWATER_REFRACTION == 4
+#elif defined(OSGWATER_REFRACTION) && OSGWATER_REFRACTION == OSGWATER_REFRACTION_VIRTUAL_VERTICES
     // virtual vertices: the pass drew the underwater scene where it appears, from this view's eye;
     // U's own place in it holds what the refracted ray sees
     owBottomHit hit = owVirtualHit(u1);
@@ -130,9 +126,9 @@ vec3 owRefractedFromAbove(vec3 U, vec3 R, out vec4 debugHit)
         col = texture(osgWater_RefractionTex, tc).rgb;
         d = length(mat3(osgWater_RefractionViewInverse) * (hit.A - u1)); // local metres
         debugHit = vec4((osgWater_RefractionViewInverse * vec4(hit.W, 1.0)).xyz, 2.0);
-#if defined(OSGWATER_REFRACTION) && OSGWATER_REFRACTION == 4
+#if defined(OSGWATER_REFRACTION) && OSGWATER_REFRACTION == OSGWATER_REFRACTION_VIRTUAL_VERTICES
         d *= osgWater_IOR.y / osgWater_IOR.x; // the virtual point lies eta times as far (eq. 2.4)
-#if defined(OSGWATER_DEBUG) && OSGWATER_DEBUG == 1
+#if defined(OSGWATER_DEBUG) && OSGWATER_DEBUG == OSGWATER_DEBUG_BOTTOM_HIT
         vec4 shown = texture(osgWater_RefractionTex, tc); // the true place drawn there (a float target)
         debugHit = shown.a > 0.5 ? vec4(shown.xyz, 4.0) : vec4(0.0, 0.0, 0.0, -1.0);
 #endif
@@ -146,7 +142,7 @@ vec3 owRefractedFromAbove(vec3 U, vec3 R, out vec4 debugHit)
 vec3 owRefractedFromBelow(vec3 U, vec3 R, out vec4 debugHit)
 {
     mat4 mvp = osgWater_RefractionProj * osgWater_RefractionView;
-#if defined(OSGWATER_UNDERWATER) && OSGWATER_UNDERWATER == 1
+#if defined(OSGWATER_UNDERWATER) && OSGWATER_UNDERWATER == OSGWATER_UNDERWATER_THESIS
     debugHit = vec4(U + osgWater_UnderwaterScale * R, 2.0);
     vec3 col = owSampleProjected(osgWater_RefractionTex, mvp, vec4(U + osgWater_UnderwaterScale * R, 1.0),
                                  osgWater_WaterColor); // eq. 13
@@ -175,7 +171,7 @@ vec3 owRefractedFromBelow(vec3 U, vec3 R, out vec4 debugHit)
 // (DeepWater, from above; under water the offset), 0 the thesis's U + c R.
 vec4 owReflectionLookupPoint(vec3 U, vec3 Rr, bool below)
 {
-#if defined(OSGWATER_REFLECTION) && OSGWATER_REFLECTION == 2 && !defined(OSGWATER_NO_REFLECTION)
+#if defined(OSGWATER_REFLECTION) && OSGWATER_REFLECTION == OSGWATER_REFLECTION_SEARCH && !defined(OSGWATER_NO_REFLECTION)
     vec3 u1 = (osgWater_ReflectionView * vec4(U, 1.0)).xyz;
     vec3 R1 = normalize(mat3(osgWater_ReflectionView) * Rr);
     // the floor: U's height, on the side the ray leaves to (eye space: the local z row, less U.z)
@@ -188,7 +184,7 @@ vec4 owReflectionLookupPoint(vec3 U, vec3 Rr, bool below)
                                      osgWater_SearchTolerance);
     return hit.valid ? vec4((osgWater_ReflectionViewInverse * vec4(hit.W, 1.0)).xyz, 1.0) : vec4(Rr, 0.0);
 #else
-#if defined(OSGWATER_REFLECTION) && OSGWATER_REFLECTION == 1
+#if defined(OSGWATER_REFLECTION) && OSGWATER_REFLECTION == OSGWATER_REFLECTION_PLANE
     if (!below) return owPlanePoint(U, Rr, osgWater_Level + osgWater_LookupPlanes.x);
 #endif
     return vec4(U + (below ? osgWater_UnderwaterScale : osgWater_ReflectionScale) * Rr, 1.0);
@@ -216,7 +212,7 @@ vec3 owShadeWater(vec3 U, vec3 Nup, vec3 E, out vec4 debugOut)
     R = refract(-E, N, n1 / n2); // never zero from air into water
     F = owFresnel(cosE, n1, n2, osgWater_FresnelQ);
 #else
-#if defined(OSGWATER_UNDERWATER) && OSGWATER_UNDERWATER == 1
+#if defined(OSGWATER_UNDERWATER) && OSGWATER_UNDERWATER == OSGWATER_UNDERWATER_THESIS
         R = (n1 / n2) * (N - E) - N; // eq. 12: never zero, no total internal reflection
         float r = (n1 - n2) / (n1 + n2);
         F = owFresnelSchlick(cosE, r * r, osgWater_FresnelQ);
@@ -224,7 +220,7 @@ vec3 owShadeWater(vec3 U, vec3 Nup, vec3 E, out vec4 debugOut)
         R = refract(-E, N, n1 / n2); // zero beyond the critical angle
         tir = dot(R, R) < 0.5;
         float cosT = clamp(-dot(R, N), 0.0, 1.0);
-#if defined(OSGWATER_FRESNEL) && OSGWATER_FRESNEL == 2
+#if defined(OSGWATER_FRESNEL) && OSGWATER_FRESNEL == OSGWATER_FRESNEL_EXACT
         F = tir ? 1.0 : owFresnel(cosE, n1, n2, osgWater_FresnelQ); // exact at the incident angle
 #else
         F = tir ? 1.0 : owFresnel(cosT, n1, n2, osgWater_FresnelQ); // approximations: air-side angle
@@ -269,9 +265,9 @@ vec3 owShadeWater(vec3 U, vec3 Nup, vec3 E, out vec4 debugOut)
     refrCol = owRefractedFromAbove(U, R, debugHit);
 #endif
 #endif
-#if defined(OSGWATER_DEBUG) && OSGWATER_DEBUG == 2
+#if defined(OSGWATER_DEBUG) && OSGWATER_DEBUG == OSGWATER_DEBUG_REFLECTION_LOOKUP
     debugOut = debugRefl;
-#elif defined(OSGWATER_DEBUG) && OSGWATER_DEBUG == 3
+#elif defined(OSGWATER_DEBUG) && OSGWATER_DEBUG == OSGWATER_DEBUG_FRESNEL
     debugOut = vec4(F, 0.0, 0.0, 2.0);
 #else
     debugOut = debugHit;
@@ -284,13 +280,13 @@ vec3 owShadeWater(vec3 U, vec3 Nup, vec3 E, out vec4 debugOut)
 // 5: the drawn point; else what owShadeWater reported), the same for the surface and the cap.
 vec4 owWaterFragment(vec3 U, vec3 drawn, vec3 color, vec4 debugHit)
 {
-#if defined(OSGWATER_DEBUG) && OSGWATER_DEBUG == 4
+#if defined(OSGWATER_DEBUG) && OSGWATER_DEBUG == OSGWATER_DEBUG_SURFACE
 #ifdef OSGWATER_GRID
     return vec4(U.xy, waterHeight(U.xy), 2.0);
 #else
     return vec4(U, 2.0);
 #endif
-#elif defined(OSGWATER_DEBUG) && OSGWATER_DEBUG == 5
+#elif defined(OSGWATER_DEBUG) && OSGWATER_DEBUG == OSGWATER_DEBUG_DRAWN_SURFACE
     return vec4(drawn, 2.0);
 #elif defined(OSGWATER_DEBUG)
     return debugHit;

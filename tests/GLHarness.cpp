@@ -1,6 +1,6 @@
 #include "GLHarness.h"
 #include <osgWater/WaterTypes>
-#include <osgWater/Optics>
+#include "optics/Optics.h"
 #include <algorithm>
 #include "../apps/common/FrameTimer.h"
 #include <osg/Material>

@@ -2,14 +2,15 @@
 // optics, the photon tracer against flat-water transmission, the per-pixel metric on flat water
 // over a checkerboard (it passes the iterative search and fails a wrong index of refraction), and
 // `osgwaterbench --quick` writing valid JSON.
+#include "node/WaterNodeImpl.h"
 #include "GLHarness.h"
 #include "Metrics.h"
 #include "PhotonTracer.h"
 #include "Probe.h"
 #include "Reference.h"
-#include <osgWater/Optics>
-#include <osgWater/PassMath>
-#include <osgWater/SceneLighting>
+#include "optics/Optics.h"
+#include "frame/PassMath.h"
+#include "frame/SceneLighting.h"
 #include <osgWater/WaterNode>
 #include <nlohmann/json.hpp>
 #include <glm/geometric.hpp>
@@ -338,7 +339,7 @@ struct CausticsAgainstReference {
         probe.viewer()->setSceneData(&water);
         probe.capture(water, 0.0);
         rendered = probe.readCaustics(water);
-        const osgWater::CausticsCamera* cc = water.getCausticsCamera();
+        const osgWater::CausticsCamera* cc = osgWater::internals(water).getCausticsCamera();
         if (!rendered.valid() || !cc) return;
         const osgWater::WaterSettings& s = *water.getSettings();
         const RayCaster scene(collectScene(water));
@@ -422,7 +423,7 @@ TEST(BenchCaustics, APierOverFlatWaterLeavesItsRefractedFootprintDarkAsThePhoton
     const osg::Vec3d T(t.x, t.y, t.z);
     const osg::Vec3d onWater = osg::Vec3d(0, 0, deckZ) - sun * (deckZ / sun.z());
     const osg::Vec3d footprint = onWater + T * (-bedZ / -T.z());
-    const osg::Matrixd& toSun = water->getCausticsCamera()->getLighting().localToSun;
+    const osg::Matrixd& toSun = osgWater::internals(*water).getCausticsCamera()->getLighting().localToSun;
     auto valueAt = [&](const osg::Vec3d& p) {
         const osg::Vec3d tc = p * toSun;
         const int x = int(tc.x() * c.rendered->s()), y = int(tc.y() * c.rendered->t());

@@ -1,6 +1,7 @@
 // The lake demo, run headless as a user would run it, and its screenshot checked for what can only
 // be there if the water works: trees mirrored below the shoreline, the bed visible through shallow
 // water and not through deep water. Each effect is switched off once to show the check depends on it.
+#include "node/WaterNodeImpl.h"
 #include "GLHarness.h"
 #include "../apps/common/Floaters.h"
 #include "../apps/common/Pond.h"
@@ -270,10 +271,10 @@ TEST(LakeDemo, ThePondAboveTheLakeIsWaterWithPassesOfItsOwn)
     h.frame(10.0);
     osg::ref_ptr<osg::Image> with = h.readColor();
 
-    ASSERT_NE(pond->getViewPasses(h.camera()), nullptr);
-    osgWater::ViewPasses* lakePasses = water->getViewPasses(h.camera());
+    ASSERT_NE(osgWater::internals(*pond).getViewPasses(h.camera()), nullptr);
+    osgWater::ViewPasses* lakePasses = osgWater::internals(*water).getViewPasses(h.camera());
     ASSERT_NE(lakePasses, nullptr);
-    EXPECT_EQ(pond->getViewPasses(lakePasses->getReflectionCamera()), nullptr) << "no passes inside the lake's";
+    EXPECT_EQ(osgWater::internals(*pond).getViewPasses(lakePasses->getReflectionCamera()), nullptr) << "no passes inside the lake's";
     int water_ = 0, checked = 0;
     for (double dx : { -1.2, 0.0, 1.2 })
         for (double dy : { 0.0, 0.8, 1.5 }) { // the far part: the near wall hides the near one

@@ -1,5 +1,5 @@
 // Optics (the CPU mirror of shaders/optics.glsl) against closed forms and hard cases.
-#include <osgWater/Optics>
+#include "optics/Optics.h"
 #include <osgWater/WaterSettings>
 #include <glm/gtc/matrix_transform.hpp>
 #include <algorithm>

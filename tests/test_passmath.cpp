@@ -1,5 +1,5 @@
 // Pass matrices, without a GPU: mirror, FOV extension, near/far, refraction-camera rotation, planes.
-#include <osgWater/PassMath>
+#include "frame/PassMath.h"
 #include <osg/io_utils>
 #include <osg/Polytope>
 #include <gtest/gtest.h>

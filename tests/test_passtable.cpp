@@ -1,6 +1,6 @@
 // The pass table: which passes a view runs follows from the frame's facts and from what reads what;
 // render orders, bins and texture units come from the table. No GPU.
-#include <osgWater/PassTable>
+#include "frame/PassTable.h"
 #include <gtest/gtest.h>
 #include <set>
 

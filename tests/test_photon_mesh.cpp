@@ -1,7 +1,7 @@
 // The CPU area-ratio mesh (osgWater::meshPhotons), the mirror its GPU path is held to: on mappings
 // whose caustic is known in closed form. A photon texel (i, j) of an n x n grid sits at
 // ((i + 0.5) / n, (j + 0.5) / n) in the sun's texture space; a mapping moves it there.
-#include <osgWater/PhotonSplat>
+#include "caustics/PhotonSplat.h"
 #include <gtest/gtest.h>
 #include <algorithm>
 #include <cmath>

@@ -1,7 +1,7 @@
 // Procedural caustics (Sanchez-Crespo 2003), the CPU mirror: calibrated on flat water, bright lines
 // where the paper's construction puts them over a single sine wave, no NaN at grazing suns.
-#include <osgWater/ProceduralCaustics>
-#include <osgWater/Optics>
+#include "caustics/ProceduralCaustics.h"
+#include "optics/Optics.h"
 #include <osgWater/WaterSurface>
 #include <gtest/gtest.h>
 #include <cmath>

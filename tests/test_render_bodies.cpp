@@ -1,11 +1,12 @@
 // Water where applications put it: under a MatrixTransform (moved, turned about z, scaled) and
 // several bodies at different levels, each rendering its own passes and appearing in the other's
 // as a guest without recursion. Checked against the Optics mirror and the same water untransformed.
+#include "node/WaterNodeImpl.h"
 #include "GLHarness.h"
 #include "WarnCapture.h"
 #include <osgWater/WaterNode>
-#include <osgWater/Optics>
-#include <osgWater/PassMath>
+#include "optics/Optics.h"
+#include "frame/PassMath.h"
 #include <osg/MatrixTransform>
 #include <algorithm>
 #include <cmath>
@@ -77,8 +78,8 @@ TEST(RenderBodies, ATransformedWaterLooksAsTheSameWaterSeenFromTheMovedEye)
         h.frame(2.0);
         osg::ref_ptr<osg::Image> transformed = h.readColor();
         ASSERT_TRUE(allFinite(transformed.get()));
-        ASSERT_NE(water->getViewPasses(h.camera()), nullptr);
-        EXPECT_EQ(water->getViewPasses(h.camera())->getEyeBelow(), eye.z() < 0);
+        ASSERT_NE(osgWater::internals(*water).getViewPasses(h.camera()), nullptr);
+        EXPECT_EQ(osgWater::internals(*water).getViewPasses(h.camera())->getEyeBelow(), eye.z() < 0);
         const double share = shareDiffering(plain.get(), transformed.get(), 0.03f);
         RecordProperty(eye.z() > 0 ? "share_differing_above" : "share_differing_below", std::to_string(share));
         EXPECT_LT(share, 0.002) << "pixels differing by more than 0.03 from every neighbour";
@@ -177,11 +178,11 @@ TEST(RenderBodies, APondAboveALakeRendersItsOwnPassesAndIsAGuestInTheLakes)
     ASSERT_TRUE(allFinite(img.get()));
 
     // no recursion: the pond has passes for the view, none for the lake's passes
-    ViewPasses* lakePasses = s.lake->getViewPasses(h.camera());
+    ViewPasses* lakePasses = osgWater::internals(*s.lake).getViewPasses(h.camera());
     ASSERT_NE(lakePasses, nullptr);
-    ASSERT_NE(s.pond->getViewPasses(h.camera()), nullptr);
-    EXPECT_EQ(s.pond->getViewPasses(lakePasses->getReflectionCamera()), nullptr);
-    EXPECT_EQ(s.pond->getViewPasses(lakePasses->getRefractionCamera()), nullptr);
+    ASSERT_NE(osgWater::internals(*s.pond).getViewPasses(h.camera()), nullptr);
+    EXPECT_EQ(osgWater::internals(*s.pond).getViewPasses(lakePasses->getReflectionCamera()), nullptr);
+    EXPECT_EQ(osgWater::internals(*s.pond).getViewPasses(lakePasses->getRefractionCamera()), nullptr);
 
     // 1. the pond, through its own passes: eq. 9 of eq. 5 of its bed and the sky, per pixel well
     //    inside the pond

@@ -3,16 +3,17 @@
 // everywhere; a lens-shaped bump must focus where geometric optics says and conserve energy; the
 // three gather paths must agree; no target may hold NaN/Inf, whatever the sun's elevation. Each
 // for both methods: photon splatting and the area-ratio mesh (RenderCausticsMethod).
+#include "node/WaterNodeImpl.h"
 #include "GLHarness.h"
 #include "WarnCapture.h"
 #include <osgWater/WaterNode>
-#include <osgWater/Optics>
-#include <osgWater/ProceduralCaustics>
+#include "optics/Optics.h"
+#include "caustics/ProceduralCaustics.h"
 #include <osgWater/WaterSurface>
 #include <osgWater/WaterTypes>
 #include <osg/Geometry>
 #include <osg/Material>
-#include <osgWater/PassMath>
+#include "frame/PassMath.h"
 #include <osg/io_utils>
 #include <algorithm>
 #include <cmath>
@@ -110,7 +111,7 @@ struct CausticsScene {
     osg::Vec3 refracted(const osg::Vec3d& p)
     {
         h.frame(1.0);
-        RefractionCamera* rc = water->getViewPasses(h.camera())->getRefractionCamera();
+        RefractionCamera* rc = osgWater::internals(*water).getViewPasses(h.camera())->getRefractionCamera();
         osg::ref_ptr<osg::Image> img = h.readTexture(rc->getColorTexture());
         const osg::Vec3d t = projectToTexture(p, rc->getViewMatrix(), rc->getProjectionMatrix());
         const float* c = pixel(img.get(), int(t.x() * img->s()), int(t.y() * img->t()));
@@ -120,7 +121,7 @@ struct CausticsScene {
     osg::ref_ptr<osg::Image> render()
     {
         h.frame(1.0);
-        CausticsCamera* c = water->getCausticsCamera();
+        CausticsCamera* c = osgWater::internals(*water).getCausticsCamera();
         if (!c) return nullptr;
         return h.readTexture(c->getCausticsTexture());
     }
@@ -128,7 +129,7 @@ struct CausticsScene {
     // the bed point under caustics texel (i, j): where that texel's sun ray meets z = bedZ
     osg::Vec3d bedPoint(const osg::Image* img, int i, int j) const
     {
-        const osg::Matrixd inv = osg::Matrixd::inverse(water->getCausticsCamera()->getLighting().localToSun);
+        const osg::Matrixd inv = osg::Matrixd::inverse(osgWater::internals(*water).getCausticsCamera()->getLighting().localToSun);
         const double u = (i + 0.5) / img->s(), v = (j + 0.5) / img->t();
         const osg::Vec3d p0 = osg::Vec3d(u, v, 0.0) * inv, p1 = osg::Vec3d(u, v, 1.0) * inv;
         return p0 + (p1 - p0) * ((bedZ - p0.z()) / (p1.z() - p0.z()));
@@ -137,7 +138,7 @@ struct CausticsScene {
     // sun-projected area of one caustics texel, m^2
     double texelArea(const osg::Image* img) const
     {
-        const osg::Vec3d& w = water->getCausticsCamera()->getWindow();
+        const osg::Vec3d& w = osgWater::internals(*water).getCausticsCamera()->getWindow();
         return w.x() * w.y() / (double(img->s()) * img->t());
     }
 };
@@ -173,7 +174,7 @@ osg::ref_ptr<osg::Image> expectGatherPathsAgree(CausticsScene& sc)
         sc.setGather(g);
         osg::ref_ptr<osg::Image> img = sc.render();
         if (!img.valid()) {
-            ADD_FAILURE() << "no caustics with " << CausticsCamera::gatherName(g);
+            ADD_FAILURE() << "no caustics with " << causticsGatherLabel(g);
             return ref;
         }
         EXPECT_EQ(sc.water->getActiveCausticsGather(), g);
@@ -188,7 +189,7 @@ osg::ref_ptr<osg::Image> expectGatherPathsAgree(CausticsScene& sc)
         for (int j = 0; j < img->t(); ++j)
             for (int i = 0; i < img->s(); ++i)
                 worst = std::max(worst, std::fabs(value(img.get(), i, j) - value(ref.get(), i, j)));
-        EXPECT_LE(worst, 0.02 * refMax) << CausticsCamera::gatherName(g) << " vs CPU";
+        EXPECT_LE(worst, 0.02 * refMax) << causticsGatherLabel(g) << " vs CPU";
     }
     return ref;
 }
@@ -238,7 +239,7 @@ TEST_P(RenderCausticsOnFlatWater, FlatWaterGivesTheTransmittedIrradianceEverywhe
 TEST(RenderCaustics, ProceduralCausticsOverASineWaveAreTheirCpuMirrorsTexelByTexel)
 {
     // one 2 m wave, 3 cm high, over a bed 2 m down; 3 cm texels. Each texel against the CPU
-    // construction at its own bed point (osgWater/ProceduralCaustics, double precision): the lines
+    // construction at its own bed point (src/osgWater/caustics/ProceduralCaustics.h, double precision): the lines
     // must be where the construction puts them, not just as bright on average
     for (const osg::Vec3 sun : { osg::Vec3(0, 0, 1), osg::Vec3(0.5f, 0.2f, 0.85f) }) {
         CausticsScene sc(8.0f, 256, 64, sun, -2.0f);
@@ -292,11 +293,11 @@ TEST(RenderCaustics, ProceduralCausticsPerPixelAreTheConstructionAtEachFragments
         sc.lightTheBed(8.0f);
         sc.h.frame(1.0);
         sc.h.frame(1.0);
-        const PassPlan plan = sc.water->getPassPlan(sc.h.camera());
+        const PassPlan plan = osgWater::internals(*sc.water).getPassPlan(sc.h.camera());
         EXPECT_FALSE(plan.runs(PASS_PHOTONS) || plan.runs(PASS_GATHER)) << plan.describe();
-        EXPECT_TRUE(sc.water->getCausticsCamera()->getLighting().procedural);
+        EXPECT_TRUE(osgWater::internals(*sc.water).getCausticsCamera()->getLighting().procedural);
 
-        RefractionCamera* rc = sc.water->getViewPasses(sc.h.camera())->getRefractionCamera();
+        RefractionCamera* rc = osgWater::internals(*sc.water).getViewPasses(sc.h.camera())->getRefractionCamera();
         osg::ref_ptr<osg::Image> img = sc.h.readTexture(rc->getColorTexture());
         ASSERT_TRUE(img.valid());
         const osg::Matrixd inv = osg::Matrixd::inverse(rc->getViewMatrix() * rc->getProjectionMatrix());
@@ -333,8 +334,8 @@ TEST(RenderCaustics, ProceduralCausticsPerPixelAreTheConstructionAtEachFragments
     sc.water->getSettings()->setCausticsMethod(WaterSettings::CAUSTICS_PROCEDURAL_SCREEN);
     sc.water->getSettings()->setReflectiveCaustics(true);
     sc.h.frame(1.0);
-    EXPECT_FALSE(sc.water->getCausticsCamera()->getLighting().procedural);
-    EXPECT_TRUE(sc.water->getPassPlan(sc.h.camera()).runs(PASS_GATHER)) << sc.water->getPassPlan(sc.h.camera()).describe();
+    EXPECT_FALSE(osgWater::internals(*sc.water).getCausticsCamera()->getLighting().procedural);
+    EXPECT_TRUE(osgWater::internals(*sc.water).getPassPlan(sc.h.camera()).runs(PASS_GATHER)) << osgWater::internals(*sc.water).getPassPlan(sc.h.camera()).describe();
 }
 
 TEST(RenderCaustics, TheCausticsTextureHasMipmapsOfItsOwnTexelsEveryFrame)
@@ -348,7 +349,7 @@ TEST(RenderCaustics, TheCausticsTextureHasMipmapsOfItsOwnTexelsEveryFrame)
     sc.water->getSettings()->setCausticsMethod(WaterSettings::CAUSTICS_PROCEDURAL);
     for (double t : { 1.0, 1.7 }) {
         sc.h.frame(t);
-        osg::Texture2D* c = sc.water->getCausticsCamera()->getCausticsTexture();
+        osg::Texture2D* c = osgWater::internals(*sc.water).getCausticsCamera()->getCausticsTexture();
         EXPECT_EQ(c->getFilter(osg::Texture::MIN_FILTER), osg::Texture::LINEAR_MIPMAP_LINEAR);
         osg::ref_ptr<osg::Image> base = sc.h.readTexture(c, 0), half = sc.h.readTexture(c, 1);
         ASSERT_TRUE(base.valid() && half.valid());
@@ -382,14 +383,14 @@ TEST(RenderCaustics, ProceduralCausticsGiveTheirPhotonsBackToATileAndToTheSunsRe
     s->setReflectiveCaustics(true);
     sc.water->addChild(litQuad(-1, -1, 1, 1, 1.0f)); // something above the water for the sun's reflection
     ASSERT_TRUE(sc.render().valid());
-    EXPECT_TRUE(sc.water->getCausticsCamera()->getPhotonCamera()->isEmpty());
-    ASSERT_TRUE(sc.water->getReflectedCausticsCamera() != nullptr);
-    EXPECT_FALSE(sc.water->getReflectedCausticsCamera()->getPhotonCamera()->isEmpty());
-    EXPECT_EQ(sc.water->getReflectedCausticsCamera()->getGather()->getCausticsMethod(), WaterSettings::CAUSTICS_PHOTONS);
+    EXPECT_TRUE(osgWater::internals(*sc.water).getCausticsCamera()->getPhotonCamera()->isEmpty());
+    ASSERT_TRUE(osgWater::internals(*sc.water).getReflectedCausticsCamera() != nullptr);
+    EXPECT_FALSE(osgWater::internals(*sc.water).getReflectedCausticsCamera()->getPhotonCamera()->isEmpty());
+    EXPECT_EQ(osgWater::internals(*sc.water).getReflectedCausticsCamera()->getGather()->getCausticsMethod(), WaterSettings::CAUSTICS_PHOTONS);
     s->setCausticsTileSize(4.0f);
     osg::ref_ptr<osg::Image> img = sc.render();
     ASSERT_TRUE(img.valid());
-    EXPECT_FALSE(sc.water->getCausticsCamera()->getPhotonCamera()->isEmpty());
+    EXPECT_FALSE(osgWater::internals(*sc.water).getCausticsCamera()->getPhotonCamera()->isEmpty());
     for (int j = 0; j < img->t(); ++j)
         for (int i = 0; i < img->s(); ++i)
             ASSERT_NEAR(value(img.get(), i, j), transmitted, 0.02 * transmitted) << i << ", " << j;
@@ -423,7 +424,7 @@ TEST(RenderCaustics, FocusedOnTheLitWaterTheyKeepTheirSpacingWithFewerPhotons)
         sc.water->getSettings()->setCausticsFocused(focused);
         osg::ref_ptr<osg::Image> img = sc.render();
         ASSERT_TRUE(img.valid()) << "no caustics pass ran";
-        grid[focused] = sc.water->getCausticsCamera()->getGridSize();
+        grid[focused] = osgWater::internals(*sc.water).getCausticsCamera()->getGridSize();
         area[focused] = sc.texelArea(img.get());
         double sum = 0, lo = 1e30, hi = -1e30;
         int n = 0;
@@ -459,7 +460,7 @@ TEST_P(RenderCausticsMethod, SupersampledTheGatherKeepsTheIrradianceAndTheGpuPat
         sc.water->getSettings()->setCausticsSupersampling(true);
         osg::ref_ptr<osg::Image> img = sc.render();
         ASSERT_TRUE(img.valid());
-        EXPECT_TRUE(sc.water->getCausticsCamera()->getGather()->getSupersampled());
+        EXPECT_TRUE(osgWater::internals(*sc.water).getCausticsCamera()->getGather()->getSupersampled());
         double sum = 0, lo = 1e30, hi = -1e30;
         int n = 0;
         for (int j = 0; j < img->t(); ++j)
@@ -563,10 +564,10 @@ TEST_P(RenderCausticsMethod, WithoutFloatTargetsTheCpuFallbackGivesTheSameCausti
         imgs[pass] = sc.render();
         unsetenv("OSGWATER_NO_FLOAT_TARGETS");
         ASSERT_TRUE(imgs[pass].valid());
-        EXPECT_EQ(sc.water->getCausticsCamera()->hasFloatTargets(), pass == 0);
+        EXPECT_EQ(osgWater::internals(*sc.water).getCausticsCamera()->hasFloatTargets(), pass == 0);
         if (pass == 1) {
             EXPECT_EQ(sc.water->getActiveCausticsGather(), WaterSettings::GATHER_CPU);
-            const float scale = sc.water->getCausticsCamera()->getGather()->getValueScale();
+            const float scale = osgWater::internals(*sc.water).getCausticsCamera()->getGather()->getValueScale();
             double worst = 0, top = 0;
             for (int j = 0; j < 64; ++j)
                 for (int i = 0; i < 64; ++i) {
@@ -591,8 +592,8 @@ TEST_P(RenderCausticsMethod, NoNaNOrInfAtAnySunElevation)
         sc.water->addChild(litQuad(-1, -1, 1, 1, 2.0f));
         sc.water->getSurface()->setWaves({ Wave() });
         sc.h.frame(1e7);
-        CausticsCamera* c = sc.water->getCausticsCamera();
-        if (CausticsCamera* r = sc.water->getReflectedCausticsCamera()) {
+        CausticsCamera* c = osgWater::internals(*sc.water).getCausticsCamera();
+        if (CausticsCamera* r = osgWater::internals(*sc.water).getReflectedCausticsCamera()) {
             EXPECT_TRUE(allFinite(sc.h.readTexture(r->getCausticsTexture()).get())) << elevation;
             EXPECT_TRUE(allFinite(sc.h.readTexture(r->getPhotonTexture()).get())) << elevation;
         } else {
@@ -660,7 +661,7 @@ TEST(RenderCaustics, TheSunReflectedOffFlatWaterLightsAWallAboveItByTheReflected
     };
     const double F = optics::fresnelSchlick(float(std::sin(e)), optics::normalReflectance(1.0f, 1.333f), 5.0f);
     EXPECT_NEAR(wallColour(), std::cos(e) * (1.0 + F), 0.01) << "F " << F;
-    CausticsCamera* r = sc.water->getReflectedCausticsCamera();
+    CausticsCamera* r = osgWater::internals(*sc.water).getReflectedCausticsCamera();
     ASSERT_NE(r, nullptr);
     EXPECT_TRUE(r->isReflected());
     // the reflective caustics texture: F where the reflected light lands (on the mirrored wall)
@@ -672,7 +673,7 @@ TEST(RenderCaustics, TheSunReflectedOffFlatWaterLightsAWallAboveItByTheReflected
     EXPECT_TRUE(allFinite(img.get()));
     s->setReflectiveCaustics(false);
     EXPECT_NEAR(wallColour(), std::cos(e), 0.01) << "off: the direct sun alone";
-    EXPECT_EQ(sc.water->getReflectedCausticsCamera(), nullptr);
+    EXPECT_EQ(osgWater::internals(*sc.water).getReflectedCausticsCamera(), nullptr);
 }
 
 TEST_P(RenderCausticsMethod, TiledTheCausticsOfOneTileRepeatWhatTheWholeWaterGives)
@@ -691,7 +692,7 @@ TEST_P(RenderCausticsMethod, TiledTheCausticsOfOneTileRepeatWhatTheWholeWaterGiv
         sc.water->getSettings()->setCausticsTileSize(4.0f);
         osg::ref_ptr<osg::Image> img = sc.render();
         ASSERT_TRUE(img.valid());
-        EXPECT_TRUE(sc.water->getCausticsCamera()->getLighting().tiled);
+        EXPECT_TRUE(osgWater::internals(*sc.water).getCausticsCamera()->getLighting().tiled);
         for (int j = 0; j < img->t(); ++j)
             for (int i = 0; i < img->s(); ++i)
                 ASSERT_NEAR(value(img.get(), i, j), transmitted, 0.02 * transmitted) << i << ", " << j;
@@ -716,7 +717,7 @@ TEST_P(RenderCausticsMethod, TiledTheCausticsOfOneTileRepeatWhatTheWholeWaterGiv
         sc.water->getSettings()->setCausticsTileSize(tiling ? tile : 0.0f);
         (tiling ? tiled : whole) = sc.render();
         ASSERT_TRUE((tiling ? tiled : whole).valid());
-        const CausticsLighting& l = sc.water->getCausticsCamera()->getLighting();
+        const CausticsLighting& l = osgWater::internals(*sc.water).getCausticsCamera()->getLighting();
         (tiling ? localToTile : wholeToSun) = tiling ? l.localToTile : l.localToSun;
     }
     const osg::Matrixd tileToLocal = osg::Matrixd::inverse(localToTile);
@@ -779,18 +780,18 @@ TEST(RenderCaustics, SunDepthMapIsRedrawnOnlyWhenTheSunMoves)
     CausticsScene sc(20.0f, 64, 128, osg::Vec3(0.3f, 0.2f, 0.93f), -2.0f);
     REQUIRE_GL(sc.h);
     sc.h.frame(1.0);
-    ASSERT_NE(sc.water->getCausticsCamera(), nullptr);
-    EXPECT_TRUE(sc.water->getCausticsCamera()->getDepthDrawn());
+    ASSERT_NE(osgWater::internals(*sc.water).getCausticsCamera(), nullptr);
+    EXPECT_TRUE(osgWater::internals(*sc.water).getCausticsCamera()->getDepthDrawn());
     sc.h.frame(2.0); // waves move, the sun does not: the underwater scene's depth is unchanged
-    EXPECT_FALSE(sc.water->getCausticsCamera()->getDepthDrawn());
+    EXPECT_FALSE(osgWater::internals(*sc.water).getCausticsCamera()->getDepthDrawn());
     sc.water->getSettings()->setSunDirection(osg::Vec3(0.1f, 0.2f, 0.95f));
     sc.h.frame(3.0);
-    EXPECT_TRUE(sc.water->getCausticsCamera()->getDepthDrawn());
-    sc.water->getCausticsCamera()->dirtyDepth();
+    EXPECT_TRUE(osgWater::internals(*sc.water).getCausticsCamera()->getDepthDrawn());
+    osgWater::internals(*sc.water).getCausticsCamera()->dirtyDepth();
     sc.h.frame(4.0);
-    EXPECT_TRUE(sc.water->getCausticsCamera()->getDepthDrawn());
+    EXPECT_TRUE(osgWater::internals(*sc.water).getCausticsCamera()->getDepthDrawn());
     sc.h.frame(5.0);
-    EXPECT_FALSE(sc.water->getCausticsCamera()->getDepthDrawn());
+    EXPECT_FALSE(osgWater::internals(*sc.water).getCausticsCamera()->getDepthDrawn());
 }
 
 TEST(RenderCaustics, AutoGatherTimesEveryPathThenKeepsOne)

@@ -4,6 +4,7 @@
 // refraction pass): a user's map of six solid faces checks that each direction reads its face,
 // and a map drawn from a scene checks the faces' orientation (what lies to one side and above
 // the water is seen there, not mirrored).
+#include "node/WaterNodeImpl.h"
 #include "GLHarness.h"
 #include <osgWater/WaterNode>
 #include <osg/TextureCubeMap>
@@ -94,7 +95,7 @@ TEST(RenderEnvironment, EachReflectedDirectionReadsItsFaceOfTheUsersMap)
         EXPECT_NEAR(c.y(), want.g(), 0.02) << "face " << v.face << ": " << c;
         EXPECT_NEAR(c.z(), want.b(), 0.02) << "face " << v.face << ": " << c;
     }
-    EXPECT_EQ(water->getEnvironmentPasses(), nullptr) << "the user's map: nothing to draw";
+    EXPECT_EQ(osgWater::internals(*water).getEnvironmentPasses(), nullptr) << "the user's map: nothing to draw";
     water->getSettings()->setEnvironmentMapEnabled(false);
     h.lookAt(osg::Vec3d(0, 0, 2), osg::Vec3d(30, 0, 0));
     EXPECT_GT((centrePixel(h) - osg::Vec3(1, 0, 0)).length(), 0.5f) << "off: the map is not read";
@@ -113,8 +114,8 @@ TEST(RenderEnvironment, TheDrawnMapShowsWhatStandsAboveTheWaterWhereItStands)
     const osg::Vec3 onWall = centrePixel(h);
     EXPECT_NEAR(onWall.x(), 1.0, 0.05) << onWall;
     EXPECT_NEAR(onWall.y(), 0.0, 0.05) << onWall;
-    ASSERT_NE(water->getEnvironmentPasses(), nullptr);
-    EXPECT_EQ(water->getEnvironmentMap(), water->getEnvironmentPasses()->getTexture());
+    ASSERT_NE(osgWater::internals(*water).getEnvironmentPasses(), nullptr);
+    EXPECT_EQ(water->getEnvironmentMap(), osgWater::internals(*water).getEnvironmentPasses()->getTexture());
     h.lookAt(osg::Vec3d(0, 0, 1), osg::Vec3d(10, -2.5, 0));
     const osg::Vec3 beside = centrePixel(h);
     EXPECT_LT(beside.x() - beside.y(), 0.5) << "the wall seen on the -y side: " << beside;
@@ -133,7 +134,7 @@ TEST(RenderEnvironment, TheDrawnMapIsDrawnOnceThenOnlyWhenAskedOrMoved)
     WaterNode* water = sc.water.get();
     auto drawn = [&](double t) {
         h.frame(t);
-        return water->getPassPlan(h.camera()).runs(PASS_ENVIRONMENT);
+        return osgWater::internals(*water).getPassPlan(h.camera()).runs(PASS_ENVIRONMENT);
     };
     EXPECT_TRUE(drawn(1.0)) << "the first frame draws it";
     EXPECT_FALSE(drawn(2.0)) << "nothing changed";
@@ -148,5 +149,5 @@ TEST(RenderEnvironment, TheDrawnMapIsDrawnOnceThenOnlyWhenAskedOrMoved)
     EXPECT_TRUE(drawn(7.0)) << "the scene grew";
     water->getSettings()->setEnvironmentMapEnabled(false);
     EXPECT_FALSE(drawn(8.0));
-    EXPECT_EQ(water->getEnvironmentPasses(), nullptr);
+    EXPECT_EQ(osgWater::internals(*water).getEnvironmentPasses(), nullptr);
 }

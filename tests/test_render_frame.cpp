@@ -1,9 +1,10 @@
 // One declared frame: every pass that draws the scene gets the same SceneLighting (the view with the
 // water out of view, the mirrored bed under water), and releasing the node gives back every GL
 // object it made.
+#include "node/WaterNodeImpl.h"
 #include "GLHarness.h"
 #include <osgWater/WaterNode>
-#include <osgWater/PassMath>
+#include "frame/PassMath.h"
 #include <cmath>
 #include <iostream>
 
@@ -75,13 +76,13 @@ TEST(RenderFrame, ChildrenAreLitTheSameWithTheWaterInViewAndOutOfView)
 
     h.lookAt(eye, osg::Vec3d(0, 10, 15), 45.0); // up: the water below the frustum
     h.frame(1.0);
-    ASSERT_EQ(water->getViewPasses(h.camera()), nullptr) << "the water should be out of view";
+    ASSERT_EQ(osgWater::internals(*water).getViewPasses(h.camera()), nullptr) << "the water should be out of view";
     osg::ref_ptr<osg::Image> up = h.readColor();
     const osg::Vec3 outOfView = colourAt(h, up.get(), wall);
 
     h.lookAt(eye, osg::Vec3d(0, 10, 8), 45.0); // down: the water in view
     h.frame(1.0);
-    ASSERT_NE(water->getViewPasses(h.camera()), nullptr) << "the water should be in view";
+    ASSERT_NE(osgWater::internals(*water).getViewPasses(h.camera()), nullptr) << "the water should be in view";
     osg::ref_ptr<osg::Image> down = h.readColor();
     const osg::Vec3 inView = colourAt(h, down.get(), wall);
 
@@ -115,9 +116,9 @@ TEST(RenderFrame, UnderWaterChildrenAreLitTheSameWithTheSurfaceInViewAndOutOfVie
         return osg::Vec3(p[0], p[1], p[2]);
     };
     const osg::Vec3 narrow = centre(20.0); // top edge 6.7 degrees below the horizontal
-    ASSERT_FALSE(water->getViewPasses(h.camera())->getPlan().runs(PASS_SURFACE));
+    ASSERT_FALSE(osgWater::internals(*water).getViewPasses(h.camera())->getPlan().runs(PASS_SURFACE));
     const osg::Vec3 wide = centre(120.0);   // top edge 43 degrees above it: the surface in view
-    ASSERT_TRUE(water->getViewPasses(h.camera())->getPlan().runs(PASS_SURFACE));
+    ASSERT_TRUE(osgWater::internals(*water).getViewPasses(h.camera())->getPlan().runs(PASS_SURFACE));
     std::cout << "shelf under water: surface out of view " << narrow.x() << ", in view " << wide.x() << std::endl;
     EXPECT_LE(maxDifference(narrow, wide), 1.0f / 255.0f);
     // eq. 10 towards a water colour with no red: red = exp(-k d) x the lit red; the sun reaches
@@ -157,7 +158,7 @@ TEST(RenderFrame, UnderWaterTheBedSeenByTotalReflectionCarriesTheCausticsAndShad
     // looking up at 60 degrees from the vertical (beyond 48.6): the reflection pass draws the bed
     h.lookAt(eye, eye + osg::Vec3d(0, std::sin(osg::DegreesToRadians(60.0)), std::cos(osg::DegreesToRadians(60.0))), 70.0);
     h.frame(1.0);
-    ViewPasses* p = water->getViewPasses(h.camera());
+    ViewPasses* p = osgWater::internals(*water).getViewPasses(h.camera());
     ASSERT_TRUE(p && p->getEyeBelow() && p->getPlan().runs(PASS_REFLECTION));
     ReflectionCamera* refl = p->getReflectionCamera();
     osg::ref_ptr<osg::Image> mirror = h.readTexture(refl->getColorTexture());
@@ -203,7 +204,7 @@ TEST(RenderFrame, ReleasingTheNodeGivesBackEveryGLObjectItMade)
     for (int i = 0; i < 40; ++i) h.frame(t += 0.05); // the automatic gather tries every path
     h.lookAt(osg::Vec3d(0, -12, -1), osg::Vec3d(0, 0, 1));
     for (int i = 0; i < 3; ++i) h.frame(t += 0.05);
-    ASSERT_TRUE(water->getViewPasses(h.camera()) && water->getViewPasses(h.camera())->getGlow());
+    ASSERT_TRUE(osgWater::internals(*water).getViewPasses(h.camera()) && osgWater::internals(*water).getViewPasses(h.camera())->getGlow());
     const GLCounts drawn = countGLObjects(h.context(), highest);
     std::cout << "before: " << before << "\ndrawn: " << drawn << std::endl;
     EXPECT_GT(drawn.textures, before.textures + 8);

@@ -1,5 +1,6 @@
 // Glow of the sun's highlight (thesis §9.3): only pixels near the highlight change, nothing
 // changes with the sun behind the viewer, and the glow target follows the view's size.
+#include "node/WaterNodeImpl.h"
 #include "GLHarness.h"
 #include <osgWater/WaterNode>
 #include <cmath>
@@ -34,7 +35,7 @@ Pair renderPair(Harness& h, WaterNode* water)
     water->getSettings()->setGlowEnabled(true);
     h.frame(1.0);
     p.on = h.readColor();
-    ViewPasses* passes = water->getViewPasses(h.camera());
+    ViewPasses* passes = osgWater::internals(*water).getViewPasses(h.camera());
     p.drawn = passes && passes->getGlowDrawn();
     if (p.drawn) p.highlight = h.readTexture(passes->getGlow()->getHighlightTexture());
     return p;
@@ -146,7 +147,7 @@ TEST(Glow, NothingWhenTheSunIsBehindTheViewer)
     h.lookAt(osg::Vec3d(0, 0, -1), osg::Vec3d(0, 10, 0), 45.0);
     water->getSettings()->setSunDirection(osg::Vec3(0.0f, 0.866f, 0.5f));
     h.frame(1.0);
-    EXPECT_FALSE(water->getViewPasses(h.camera())->getGlowDrawn());
+    EXPECT_FALSE(osgWater::internals(*water).getViewPasses(h.camera())->getGlowDrawn());
 }
 
 TEST(Glow, TargetFollowsTheViewportAndTheResolutionSetting)
@@ -157,7 +158,7 @@ TEST(Glow, TargetFollowsTheViewportAndTheResolutionSetting)
     h.setScene(water.get());
     h.lookAt(osg::Vec3d(0, 0, 3), osg::Vec3d(0, 10, 0), 45.0);
     h.frame(1.0);
-    ViewPasses* passes = water->getViewPasses(h.camera());
+    ViewPasses* passes = osgWater::internals(*water).getViewPasses(h.camera());
     ASSERT_TRUE(passes && passes->getGlow());
     EXPECT_EQ(passes->getGlow()->getWidth(), 50);
     EXPECT_EQ(passes->getGlow()->getHeight(), 38);

@@ -1,11 +1,12 @@
 // A red quad above flat water must appear mirrored in the reflection texture at the pixel the
 // geometry predicts, and in the final image where the eye sees its mirror image.
+#include "node/WaterNodeImpl.h"
 #include "GLHarness.h"
 #include <osgWater/WaterNode>
-#include <osgWater/Optics>
+#include "optics/Optics.h"
 #include <osgWater/WaterTypes>
 #include <osgWater/WaterSurface>
-#include <osgWater/ViewPasses>
+#include "frame/ViewPasses.h"
 #include <algorithm>
 #include <functional>
 #include <cmath>
@@ -50,7 +51,7 @@ TEST(RenderReflection, RedQuadAppearsMirroredWhereGeometryPredicts)
     h.lookAt(eye, osg::Vec3d(0, 12, 0));
     h.frame(0.0);
 
-    ViewPasses* passes = water->getViewPasses(h.camera());
+    ViewPasses* passes = osgWater::internals(*water).getViewPasses(h.camera());
     ASSERT_TRUE(passes);
     osg::ref_ptr<osg::Image> refl = h.readTexture(passes->getReflectionCamera()->getColorTexture());
     ASSERT_TRUE(refl.valid());
@@ -170,7 +171,7 @@ MirrorLookupErrors mirrorLookupOnAWall(WaterSettings::ReflectionLookup lookup, b
     h.lookAt(eye, osg::Vec3d(0, 12, 0));
     const double t = 0.0;
     h.frame(t);
-    ViewPasses* passes = water->getViewPasses(h.camera());
+    ViewPasses* passes = osgWater::internals(*water).getViewPasses(h.camera());
     if (!passes) return out;
     const osg::Matrixd reflMVP = passes->getReflectionCamera()->getViewProjection();
     const int size = passes->getReflectionCamera()->getTargetWidth();

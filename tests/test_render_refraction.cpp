@@ -1,9 +1,10 @@
 // A checkerboard bed under flat water must be seen where Snell's law puts it. The water shader's
 // bottom estimate W (debug output) is compared per pixel with the exact refracted hit; the error is
 // stated in refraction-texture texels, where the colour lookup happens.
+#include "node/WaterNodeImpl.h"
 #include "GLHarness.h"
 #include <osgWater/WaterNode>
-#include <osgWater/Optics>
+#include "optics/Optics.h"
 #include <algorithm>
 #include <cmath>
 #include <functional>
@@ -213,7 +214,7 @@ TEST(RenderRefraction, RotatedRefractionCameraFindsTheSameHit)
     sc.water->getSettings()->setRefractionLookup(WaterSettings::ITERATIVE);
     sc.water->setDebugOutput(DEBUG_BOTTOM_HIT);
     sc.h.frame(0.0);
-    ViewPasses* p = sc.water->getViewPasses(sc.h.camera());
+    ViewPasses* p = osgWater::internals(*sc.water).getViewPasses(sc.h.camera());
     ASSERT_TRUE(p);
     EXPECT_FALSE(p->getRefractionCamera()->getViewMatrix() == sc.h.camera()->getViewMatrix()); // it did rotate
     osg::ref_ptr<osg::Image> img = sc.h.readColor();

@@ -1,5 +1,6 @@
 // No NaN or Inf may reach a pixel: grazing rays, the eye on the water plane, the eye under water
 // (total internal reflection), huge times, sky everywhere in the depth texture.
+#include "node/WaterNodeImpl.h"
 #include "GLHarness.h"
 #include <osgWater/WaterNode>
 #include "WarnCapture.h"
@@ -21,7 +22,7 @@ void expectAllTargetsFinite(Harness& h, WaterNode* water, const char* name)
     osg::ref_ptr<osg::Image> img = h.readColor();
     ASSERT_TRUE(img.valid()) << name;
     EXPECT_TRUE(allFinite(img.get())) << name << ": final image";
-    ViewPasses* p = water->getViewPasses(h.camera());
+    ViewPasses* p = osgWater::internals(*water).getViewPasses(h.camera());
     ASSERT_TRUE(p) << name;
     EXPECT_TRUE(allFinite(h.readTexture(p->getReflectionCamera()->getColorTexture()).get())) << name << ": reflection";
     EXPECT_TRUE(allFinite(h.readTexture(p->getRefractionCamera()->getColorTexture()).get())) << name << ": refraction";
@@ -73,7 +74,7 @@ TEST(RenderRobustness, UnderwaterEyeSwapsThePassSides)
     h.setScene(water.get());
     h.lookAt(osg::Vec3d(0, 0, -1), osg::Vec3d(0, 10, 0));
     h.frame(0.0);
-    ViewPasses* p = water->getViewPasses(h.camera());
+    ViewPasses* p = osgWater::internals(*water).getViewPasses(h.camera());
     ASSERT_TRUE(p);
     // eye below: the reflection keeps the water side (z below the crests), the refraction the air side
     const osg::Plane& refl = p->getReflectionCamera()->getKeepPlane();

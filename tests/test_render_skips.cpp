@@ -1,6 +1,7 @@
 // Work the frame skips because it cannot change the image: each skip is checked twice, that the
 // pass did not run, and that the image equals (within 1/255) the frame with skipping off, where
 // every planned pass runs in full.
+#include "node/WaterNodeImpl.h"
 #include "GLHarness.h"
 #include <osgWater/WaterNode>
 #include <algorithm>
@@ -56,7 +57,7 @@ TEST(Skips, TheCapIsNotDrawnWhenTheNearPlaneCannotReachTheWater)
     osg::ref_ptr<WaterNode> water = wavyLake();
     h.setScene(water.get());
     h.lookAt(osg::Vec3d(0, 0, 3), osg::Vec3d(0, 10, 0));
-    const UnderwaterView* uv = water->getUnderwaterView();
+    const UnderwaterView* uv = osgWater::internals(*water).getUnderwaterView();
     const unsigned drawsBefore = uv->getCapDraws(), skipsBefore = uv->getCapSkips();
     const SkipFrames f = renderBothWays(h, water.get(), 1.0);
     EXPECT_EQ(uv->getCapDraws(), drawsBefore + 1) << "skipping off: the planned cap is drawn";
@@ -83,9 +84,9 @@ TEST(Skips, APassCompilesCausticsAndFogOnlyWhereTheyCanChangeItsPixels)
     // below, which the water shader itself fades (caustics, no fog)
     h.lookAt(osg::Vec3d(0, 0, 3), osg::Vec3d(0, 10, -1));
     h.frame(1.0);
-    ViewPasses* p = water->getViewPasses(h.camera());
+    ViewPasses* p = osgWater::internals(*water).getViewPasses(h.camera());
     ASSERT_TRUE(p);
-    ASSERT_TRUE(water->getCausticsCamera()) << "the sun is up and a bed lies under the water";
+    ASSERT_TRUE(osgWater::internals(*water).getCausticsCamera()) << "the sun is up and a bed lies under the water";
     EXPECT_FALSE(has(p->getReflectionCamera(), "OSGWATER_CAUSTICS"));
     EXPECT_FALSE(has(p->getReflectionCamera(), "OSGWATER_FOG"));
     EXPECT_TRUE(has(p->getRefractionCamera(), "OSGWATER_CAUSTICS"));
@@ -114,7 +115,7 @@ TEST(Skips, CausticsAreReusedUntilTheWavesCanHaveMovedThem)
                                                     osg::Vec3(20, 20, -2), osg::Vec3(-20, 20, -2)));
     h.setScene(water.get());
     h.lookAt(osg::Vec3d(0, -1, 4), osg::Vec3d(0, 0, -2));
-    auto rendered = [&] { return water->getViewPasses(h.camera())->getPlan().runs(PASS_PHOTONS); };
+    auto rendered = [&] { return osgWater::internals(*water).getViewPasses(h.camera())->getPlan().runs(PASS_PHOTONS); };
 
     // the surface where it was: the caustics of the last frame are the caustics of this one
     const SkipFrames f = renderBothWays(h, water.get(), 1.0);
@@ -126,8 +127,8 @@ TEST(Skips, CausticsAreReusedUntilTheWavesCanHaveMovedThem)
     ASSERT_GT(hold, 0.0);
     ASSERT_TRUE(std::isfinite(hold));
     // half a texel (the default tolerance) at the fastest wave's phase speed
-    const osg::Vec3d& window = water->getCausticsCamera()->getWindow();
-    const double texel = std::max(window.x(), window.y()) / water->getCausticsCamera()->getResolution();
+    const osg::Vec3d& window = osgWater::internals(*water).getCausticsCamera()->getWindow();
+    const double texel = std::max(window.x(), window.y()) / osgWater::internals(*water).getCausticsCamera()->getResolution();
     EXPECT_NEAR(hold, 0.5 * texel / water->getSurface()->getMaxPhaseSpeed(), 1e-9);
     h.frame(1.0 + 0.9 * hold);
     EXPECT_FALSE(rendered());
@@ -142,7 +143,7 @@ TEST(Skips, CausticsAreReusedUntilTheWavesCanHaveMovedThem)
     // a tile's texels are the tile's: half of one of those
     s->setCausticsTileSize(2.0f);
     h.frame(1.0 + 1.1 * hold);
-    const double tileTexel = 2.0 / water->getCausticsCamera()->getResolution();
+    const double tileTexel = 2.0 / osgWater::internals(*water).getCausticsCamera()->getResolution();
     EXPECT_NEAR(water->getCausticsHoldTime(), 0.5 * tileTexel / water->getSurface()->getMaxPhaseSpeed(), 1e-9);
     s->setCausticsTileSize(0.0f);
 
@@ -176,10 +177,10 @@ TEST(Skips, TheGlowIsDrawnOnlyWhereTheHighlightCanReach)
     osg::ref_ptr<osg::Image> noGlow = h.readColor();
     s->setGlowEnabled(true);
     const SkipFrames f = renderBothWays(h, water.get(), 1.0);
-    ASSERT_TRUE(water->getViewPasses(h.camera())->getGlowDrawn());
+    ASSERT_TRUE(osgWater::internals(*water).getViewPasses(h.camera())->getGlowDrawn());
     EXPECT_GT(largestDifference(noGlow.get(), f.full.get()), 0.05f) << "the glow must show for the test to mean anything";
 
-    const GlowPasses* g = water->getViewPasses(h.camera())->getGlow();
+    const GlowPasses* g = osgWater::internals(*water).getViewPasses(h.camera())->getGlow();
     const osg::Vec4i& reach = g->getGlowTexels();
     EXPECT_LT(reach.z() * reach.w(), g->getWidth() * g->getHeight() / 2) << "the highlight covers little of the view";
     const osg::Viewport* vp = g->getHighlightCamera()->getViewport();

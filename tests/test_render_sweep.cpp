@@ -2,6 +2,7 @@
 // back (final image and every target of every pass) and checked for NaN/Inf and GL errors. Each
 // axis's edge values are listed explicitly and cycled with coprime strides, so every edge value
 // meets many values of every other axis; the rest are drawn from a fixed-seed generator.
+#include "node/WaterNodeImpl.h"
 #include "GLHarness.h"
 #include <osgWater/WaterNode>
 #include <osg/GL>
@@ -248,7 +249,7 @@ struct Outputs {
 Outputs outputsOf(Harness& h, WaterNode* water)
 {
     Outputs o;
-    if (ViewPasses* p = water->getViewPasses(h.camera())) {
+    if (ViewPasses* p = osgWater::internals(*water).getViewPasses(h.camera())) {
         o.list.push_back({ "reflection", p->getReflectionCamera()->getColorTexture() });
         o.list.push_back({ "refraction", p->getRefractionCamera()->getColorTexture() });
         o.list.push_back({ "refraction depth", p->getRefractionCamera()->getDepthTexture() });
@@ -257,12 +258,12 @@ Outputs outputsOf(Harness& h, WaterNode* water)
             o.list.push_back({ "glow", g->getGlowTexture() });
         }
     }
-    if (CausticsCamera* c = water->getCausticsCamera()) {
+    if (CausticsCamera* c = osgWater::internals(*water).getCausticsCamera()) {
         o.list.push_back({ "sun depth", c->getDepthTexture() });
         o.list.push_back({ "photons", c->getPhotonTexture() });
         o.list.push_back({ "caustics", c->getCausticsTexture() });
     }
-    if (CausticsCamera* r = water->getReflectedCausticsCamera()) {
+    if (CausticsCamera* r = osgWater::internals(*water).getReflectedCausticsCamera()) {
         o.list.push_back({ "reflected sun depth", r->getDepthTexture() });
         o.list.push_back({ "reflected photons", r->getPhotonTexture() });
         o.list.push_back({ "reflective caustics", r->getCausticsTexture() });

@@ -2,6 +2,7 @@
 // views in one context, whose culls run in parallel under CullThreadPerCameraDrawThreadPerContext),
 // views added and removed, 220 frames at fixed simulation times. Each view's image at the
 // checkpoints must be the SingleThreaded run's, no GL error, no crash.
+#include "node/WaterNodeImpl.h"
 #include "GLHarness.h"
 #include <osgWater/WaterNode>
 #include <osgViewer/CompositeViewer>
@@ -192,5 +193,5 @@ TEST(RenderThreads, EveryLeafDrawnUnderTheKitsStateIsDynamic)
         EXPECT_GT(all, 0) << c.name;
         EXPECT_EQ(dynamic, all) << c.name << ": leaves OSG would not wait for";
     }
-    ASSERT_TRUE(water->getViewPasses(h.camera()) && water->getViewPasses(h.camera())->getGlow());
+    ASSERT_TRUE(osgWater::internals(*water).getViewPasses(h.camera()) && osgWater::internals(*water).getViewPasses(h.camera())->getGlow());
 }

@@ -1,9 +1,10 @@
 // The eye under water (thesis §7.5): eq. 10 fog, the surface seen from below with total
 // internal reflection, the eye's side decided by the wave at the eye, and a camera crossing the
 // surface with a near plane that cuts it.
+#include "node/WaterNodeImpl.h"
 #include "GLHarness.h"
 #include <osgWater/WaterNode>
-#include <osgWater/Optics>
+#include "optics/Optics.h"
 #include <osgWater/WaterTypes>
 #include <cmath>
 #include <algorithm>
@@ -62,7 +63,7 @@ TEST_P(RenderUnderwaterFog, ObjectsFadeToTheWaterColourWithDistanceFromTheEye)
     const osg::Vec3d eye(0, 0, -3);
     h.lookAt(eye, osg::Vec3d(0, 10, -3), 60.0);
     h.frame(0.0);
-    ASSERT_TRUE(water->getViewPasses(h.camera()) && water->getViewPasses(h.camera())->getEyeBelow());
+    ASSERT_TRUE(osgWater::internals(*water).getViewPasses(h.camera()) && osgWater::internals(*water).getViewPasses(h.camera())->getEyeBelow());
     osg::ref_ptr<osg::Image> img = h.readColor();
     ASSERT_TRUE(allFinite(img.get()));
 
@@ -103,7 +104,7 @@ TEST(RenderUnderwater, TheWaveAtTheEyeDecidesWhichSideItIsOn)
     for (const Case& c : cases) {
         h.lookAt(osg::Vec3d(c.x, 0, c.z), osg::Vec3d(c.x, 10, c.z - 1), 45.0);
         h.frame(0.0);
-        ViewPasses* p = water->getViewPasses(h.camera());
+        ViewPasses* p = osgWater::internals(*water).getViewPasses(h.camera());
         ASSERT_TRUE(p);
         EXPECT_EQ(p->getEyeBelow(), c.below) << "eye at x " << c.x << " z " << c.z;
         osg::ref_ptr<osg::Image> img = h.readColor();

@@ -1,5 +1,6 @@
 // Per-view passes: two views in one CompositeViewer each render their own, correct reflection;
 // passes cull (not just clip) subgraphs wholly on the wrong side of the water plane.
+#include "node/WaterNodeImpl.h"
 #include "GLHarness.h"
 #include <osgWater/WaterNode>
 #include <osgViewer/CompositeViewer>
@@ -73,7 +74,7 @@ TEST(RenderViews, TwoViewsEachGetTheirOwnReflection)
     osg::Texture2D* reflTex[2];
     for (int i = 0; i < 2; ++i) {
         osg::Camera* cam = viewer->getView(i)->getCamera();
-        ViewPasses* p = water->getViewPasses(cam);
+        ViewPasses* p = osgWater::internals(*water).getViewPasses(cam);
         ASSERT_TRUE(p);
         reflTex[i] = p->getReflectionCamera()->getColorTexture();
         // the final image shows this view's quad mirrored, in its own colour
@@ -153,12 +154,12 @@ TEST(RenderViews, NoPassesWhenTheWaterIsOutOfView)
     h.frame(0.0);
     EXPECT_EQ(counter->visits["main"], 1);
     EXPECT_EQ(counter->visits["osgWater.ReflectionCamera"], 0);
-    EXPECT_EQ(water->getViewPasses(h.camera()), nullptr);
-    EXPECT_EQ(water->getPassPlan(h.camera()).describe(), "scene") << "nothing but the scene under its lighting";
+    EXPECT_EQ(osgWater::internals(*water).getViewPasses(h.camera()), nullptr);
+    EXPECT_EQ(osgWater::internals(*water).getPassPlan(h.camera()).describe(), "scene") << "nothing but the scene under its lighting";
     // and in view again, the plan says so
     h.lookAt(osg::Vec3d(0, 0, 21), osg::Vec3d(0, 8, 0), 30.0);
     h.frame(0.0);
-    EXPECT_TRUE(water->getPassPlan(h.camera()).runs(PASS_SURFACE));
+    EXPECT_TRUE(osgWater::internals(*water).getPassPlan(h.camera()).runs(PASS_SURFACE));
 }
 
 TEST(RenderViews, PassTargetsScaledToTheViewShadeFlatWaterAsTheOpticsMirrorDoes)
@@ -175,7 +176,7 @@ TEST(RenderViews, PassTargetsScaledToTheViewShadeFlatWaterAsTheOpticsMirrorDoes)
     h.setScene(water.get());
     h.lookAt(osg::Vec3d(0, -3, 2.5), osg::Vec3d(0, 8, -1.5));
     h.frame(0.0);
-    ViewPasses* p = water->getViewPasses(h.camera());
+    ViewPasses* p = osgWater::internals(*water).getViewPasses(h.camera());
     ASSERT_NE(p, nullptr);
     for (const PassCamera* c : { static_cast<PassCamera*>(p->getReflectionCamera()), static_cast<PassCamera*>(p->getRefractionCamera()) }) {
         EXPECT_EQ(c->getTargetWidth(), 200);
@@ -193,12 +194,12 @@ TEST(RenderViews, PassTargetsScaledToTheViewShadeFlatWaterAsTheOpticsMirrorDoes)
     // half the view per axis
     water->getSettings()->setPassTargetScale(0.5f);
     h.frame(0.0);
-    EXPECT_EQ(water->getViewPasses(h.camera())->getReflectionCamera()->getTargetWidth(), 100);
-    EXPECT_EQ(water->getViewPasses(h.camera())->getReflectionCamera()->getTargetHeight(), 50);
+    EXPECT_EQ(osgWater::internals(*water).getViewPasses(h.camera())->getReflectionCamera()->getTargetWidth(), 100);
+    EXPECT_EQ(osgWater::internals(*water).getViewPasses(h.camera())->getReflectionCamera()->getTargetHeight(), 50);
 
     // 0: the fixed squares again
     water->getSettings()->setPassTargetScale(0.0f);
     h.frame(0.0);
-    EXPECT_EQ(water->getViewPasses(h.camera())->getRefractionCamera()->getTargetWidth(), 512);
-    EXPECT_EQ(water->getViewPasses(h.camera())->getRefractionCamera()->getTargetHeight(), 512);
+    EXPECT_EQ(osgWater::internals(*water).getViewPasses(h.camera())->getRefractionCamera()->getTargetWidth(), 512);
+    EXPECT_EQ(osgWater::internals(*water).getViewPasses(h.camera())->getRefractionCamera()->getTargetHeight(), 512);
 }

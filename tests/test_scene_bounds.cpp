@@ -3,7 +3,7 @@
 // shore above the water, a shore's shadow under an oblique sun, a sky dome's inside (no shade),
 // the outside of a dome (shades everything).
 #include <gtest/gtest.h>
-#include <osgWater/SceneBounds>
+#include "frame/SceneBounds.h"
 #include <osgWater/WaterNode>
 #include "UpdateTraversal.h"
 #include <osg/Geode>

@@ -1,6 +1,6 @@
 // Shader overrides come only from osgWater/shaders/<name> in a directory of the OSG data path:
 // never from a bare name, never from the working directory (any project may keep a scene.frag).
-#include <osgWater/Shaders>
+#include "shaders/Shaders.h"
 #include <osgDB/FileUtils>
 #include <gtest/gtest.h>
 #include <fstream>

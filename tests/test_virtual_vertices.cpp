@@ -1,7 +1,7 @@
 // Refraction by virtual vertices, without a GPU: the refraction rays and their extrapolations, the
 // virtual vertex against Snell's law on a plane solved independently, and the error-volume
 // experiment's trends at reduced sampling.
-#include <osgWater/VirtualVertices>
+#include "optics/VirtualVertices.h"
 #include "ErrorVolume.h"
 #include "Refractor.h"
 #include <gtest/gtest.h>

@@ -2,8 +2,8 @@
 // rests on, its values through a file (bad values: test_bad_values.cpp). No GPU.
 #include <osgWater/WaterTypes>
 #include <osgWater/WaterSettings>
-#include <osgWater/SceneLighting>
-#include <osgWater/Optics>
+#include "frame/SceneLighting.h"
+#include "optics/Optics.h"
 #include <osgDB/ReadFile>
 #include <osgDB/WriteFile>
 #include <gtest/gtest.h>

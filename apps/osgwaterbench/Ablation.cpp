@@ -1,3 +1,4 @@
+#include "node/WaterNodeImpl.h"
 #include "Ablation.h"
 #include "../common/FrameTimer.h"
 #include <osg/Timer>
@@ -50,7 +51,7 @@ Ablation runAblation(osgViewer::Viewer& viewer, osg::Switch* scenes, WaterNode& 
     // configuration uses the method it chose for the default
     const WaterSettings::CausticsGather gather = water.getActiveCausticsGather() == WaterSettings::GATHER_AUTO
                                                      ? base.getCausticsGather() : water.getActiveCausticsGather();
-    a.gather = osgWater::CausticsCamera::gatherName(gather);
+    a.gather = osgWater::causticsGatherLabel(gather);
     const bool timing = water.getPassTimingEnabled();
     water.setPassTimingEnabled(true);
     osg::Camera* camera = viewer.getCamera();
@@ -78,7 +79,7 @@ Ablation runAblation(osgViewer::Viewer& viewer, osg::Switch* scenes, WaterNode& 
                     if (i < 2) continue; // warm-up: targets remade, programs linked
                     ms.push_back(osg::Timer::instance()->delta_m(t0, osg::Timer::instance()->tick()));
                     if (c.name != "everything on") continue;
-                    const osgWater::PassPlan plan = water.getPassPlan(camera);
+                    const osgWater::PassPlan plan = osgWater::internals(water).getPassPlan(camera);
                     av.waterInView = av.waterInView || plan.runs(osgWater::PASS_SURFACE);
                     av.effectRan["caustics"] = av.effectRan["caustics"] || plan.runs(osgWater::PASS_PHOTONS);
                     av.effectRan["glow"] = av.effectRan["glow"] || plan.runs(osgWater::PASS_GLOW_COMPOSITE);

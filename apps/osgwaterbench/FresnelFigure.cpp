@@ -1,6 +1,6 @@
 #include "FresnelFigure.h"
 #include "Gnuplot.h"
-#include <osgWater/Optics>
+#include "optics/Optics.h"
 #include <osgWater/WaterSettings>
 #include <osgDB/FileUtils>
 #include <cmath>

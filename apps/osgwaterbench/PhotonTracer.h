@@ -8,7 +8,7 @@
 #include "Reference.h"
 #include <osg/Matrixd>
 #include <osg/Image>
-#include <osgWater/SceneLighting>
+#include "frame/SceneLighting.h"
 #include <cstddef>
 #include <vector>
 

@@ -1,3 +1,4 @@
+#include "node/WaterNodeImpl.h"
 #include "Probe.h"
 #include "../common/FrameTimer.h"
 #include <osg/GL>
@@ -106,7 +107,7 @@ Estimate Probe::capture(osgWater::WaterNode& water, double t)
     e.pixelsPerRadian = camera()->getProjectionMatrix()(1, 1) * 0.5 * camera()->getViewport()->height();
     e.level = water.getSurface()->getLevel();
     e.clearance = water.getSurface()->getMaxAmplitude() + water.getSettings()->getClipOffset();
-    if (osgWater::ViewPasses* p = water.getViewPasses(camera())) {
+    if (osgWater::ViewPasses* p = osgWater::internals(water).getViewPasses(camera())) {
         e.eyeBelow = p->getEyeBelow();
         e.refractionView = p->getRefractionCamera()->getViewMatrix();
         e.refractionEye = osg::Matrixd::inverse(e.refractionView).getTrans();
@@ -120,7 +121,7 @@ Estimate Probe::capture(osgWater::WaterNode& water, double t)
 
 osg::ref_ptr<osg::Image> Probe::readCaustics(osgWater::WaterNode& water)
 {
-    osgWater::CausticsCamera* c = water.getCausticsCamera();
+    osgWater::CausticsCamera* c = osgWater::internals(water).getCausticsCamera();
     // per pixel (procedural) the caustics are made in the scene program: no texture holds them
     if (!c || !water.getSettings()->getCausticsEnabled() || c->getLighting().procedural) return nullptr;
     osg::ref_ptr<osg::Image> img = read(c->getCausticsTexture());

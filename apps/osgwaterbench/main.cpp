@@ -3,6 +3,7 @@
 // estimates against an exact Embree reference (refraction, reflection, Fresnel) and of its
 // caustics against photon tracing. Writes results.json / results.csv and, with --docs, the
 // generated BENCHMARKS.md and its plot.
+#include "node/WaterNodeImpl.h"
 #include "FresnelFigure.h"
 #include "Ablation.h"
 #include "BenchOptions.h"
@@ -13,7 +14,7 @@
 #include "../common/FrameTimer.h"
 #include "../common/SceneWater.h"
 #include "../common/Today.h"
-#include <osgWater/SceneLighting>
+#include "frame/SceneLighting.h"
 #include <osgDB/FileUtils>
 #include <osgDB/ReadFile>
 #include <osg/GL>
@@ -333,7 +334,7 @@ int main(int argc, char** argv)
             }
             if (osg::ref_ptr<osg::Image> caustics = probe.readCaustics(*water)) {
                 r.nanPixels += countNonFinite(caustics.get());
-                const osgWater::CausticsCamera* cc = water->getCausticsCamera();
+                const osgWater::CausticsCamera* cc = osgWater::internals(*water).getCausticsCamera();
                 // a tile: what the scene shader reads at the bed point under each texel of the sun's
                 // window, at the tile's texel size
                 int resolution = cc->getResolution();

@@ -32,16 +32,16 @@ std::string describeSurface(const osgWater::WaterSurface& s)
     return std::string("mesh ") + osgWater::WaterSurface::meshLayoutName(s.getMeshLayout());
 }
 
-std::string describeCaustics(const osgWater::WaterNode& water)
+std::string describeCaustics(const osgWater::WaterNode& water, const osgWater::ViewReport& report)
 {
     const WaterSettings& s = *water.getSettings();
     if (!s.getCausticsEnabled()) return "off";
     std::ostringstream o;
     o << WaterSettings::causticsMethodName(s.getCausticsMethod()) << (s.getCausticsSupersampling() ? " 2x2" : "")
       << (s.getCausticsTileSize() > 0.0f ? " tiled" : "") << (s.getReflectiveCaustics() ? " + reflective" : "") << ", "
-      << osgWater::CausticsCamera::gatherName(water.getActiveCausticsGather())
+      << osgWater::causticsGatherLabel(water.getActiveCausticsGather())
       << (s.getCausticsGather() != WaterSettings::GATHER_AUTO ? ""
-          : water.getCausticsCamera() && water.getCausticsCamera()->isAutoGatherSettled() ? " (auto)" : " (auto, timing)") << " " << s.getCausticsResolution()
+          : report.causticsGatherSettled ? " (auto)" : " (auto, timing)") << " " << s.getCausticsResolution()
       << "/" << s.getPhotonGridSize();
     return o.str();
 }
@@ -61,21 +61,20 @@ public:
         const double dt = now - _last;
         _last = now;
         if (dt > 0 && dt < 10.0) _fps = _fps <= 0 ? 1.0 / dt : 0.9 * _fps + 0.1 / dt;
-        osgWater::ViewPasses* p = _water->getViewPasses(_camera.get());
+        const osgWater::ViewReport r = _water->getViewReport(_camera.get());
         char fps[32] = "-- fps"; // until two frames have been seen
         if (_fps > 0) std::snprintf(fps, sizeof(fps), "%.1f fps", _fps);
-        const osgWater::CausticsCamera* c = _water->getCausticsCamera();
         // a pass that did not run (or is not timed on its own: caustics made per pixel) has no time
         auto ms = [](double v) {
             char s[32] = "--";
             if (v >= 0.0) std::snprintf(s, sizeof(s), "%.2f ms", v);
             return std::string(s);
         };
-        const std::string line = std::string(fps) + "   reflection " + ms(p ? p->getReflectionMilliseconds() : -1.0) +
-                                 "   refraction " + ms(p ? p->getRefractionMilliseconds() : -1.0) + "   caustics " +
-                                 ms(c ? c->getMilliseconds() : -1.0) + " (GPU)\n";
+        const std::string line = std::string(fps) + "   reflection " + ms(r.milliseconds[osgWater::PASS_REFLECTION]) +
+                                 "   refraction " + ms(r.milliseconds[osgWater::PASS_REFRACTION]) + "   caustics " +
+                                 ms(r.milliseconds[osgWater::PASS_PHOTONS]) + " (GPU)\n";
         _text->setText(line + describeSettings(*_water->getSettings()) + ", " +
-                       describeSurface(*_water->getSurface()) + ", caustics " + describeCaustics(*_water) +
+                       describeSurface(*_water->getSurface()) + ", caustics " + describeCaustics(*_water, r) +
                        "\nkeys: r reflection  f refraction  t technique  e reflection lookup  +/- steps  m fresnel  o rotation  k caustics  g gather  a caustics mesh  x 2x2  y reflective  v environment  i surface mesh  u under water  n model  l glow  s stats  arrows move");
         traverse(node, nv);
     }

@@ -10,4 +10,4 @@ std::string describeSettings(const osgWater::WaterSettings& s);
 //! The surface's mesh: its layout, or "mesh user".
 std::string describeSurface(const osgWater::WaterSurface& s);
 //! The caustics state: off, or the gather in use and the texture/photon-grid sizes.
-std::string describeCaustics(const osgWater::WaterNode& water);
+std::string describeCaustics(const osgWater::WaterNode& water, const osgWater::ViewReport& report);

@@ -55,7 +55,7 @@ std::vector<Configuration> configurations(osg::Switch* scenes, osgWater::WaterNo
         c[0].select = [=] { scenes->setSingleChildOn(0); s->setCausticsEnabled(false); };
         for (WaterSettings::CausticsGather g : { WaterSettings::GATHER_POINTS_COPY, WaterSettings::GATHER_POINTS_TEXTURE,
                                                  WaterSettings::GATHER_CPU })
-            c.push_back({ std::string("water, caustics ") + osgWater::CausticsCamera::gatherName(g),
+            c.push_back({ std::string("water, caustics ") + osgWater::causticsGatherLabel(g),
                           [=] { scenes->setSingleChildOn(0); s->setCausticsEnabled(true); s->setCausticsGather(g); }, {} });
     }
     if (o.compareGlow) {
@@ -91,9 +91,9 @@ int runHeadless(osgViewer::Viewer& viewer, osg::Switch* scenes, osgWater::WaterN
                 const double ms = osg::Timer::instance()->delta_m(t0, osg::Timer::instance()->tick());
                 if (i < 2) continue; // the first frames after a switch warm up (GPU times lag a frame)
                 configs[which].ms.push_back(ms);
-                const osgWater::CausticsCamera* c = water->getCausticsCamera();
-                if (c && scenes->getValue(0) && s->getCausticsEnabled() && c->getMilliseconds() >= 0)
-                    configs[which].causticsMs.push_back(c->getMilliseconds());
+                const double causticsMs = water->getPassMilliseconds(viewer.getCamera(), osgWater::PASS_PHOTONS);
+                if (scenes->getValue(0) && s->getCausticsEnabled() && causticsMs >= 0)
+                    configs[which].causticsMs.push_back(causticsMs);
                 if (which != 0) continue;
                 for (int pass = 0; pass < osgWater::PASS_COUNT; ++pass) {
                     const double gpu = water->getPassMilliseconds(viewer.getCamera(), osgWater::PassId(pass));
@@ -113,7 +113,7 @@ int runHeadless(osgViewer::Viewer& viewer, osg::Switch* scenes, osgWater::WaterN
     }
     std::cout << "screenshot: " << o.screenshot << std::endl;
     std::cout << "settings: " << describeSettings(*water->getSettings()) << ", " << describeSurface(*water->getSurface())
-              << ", caustics " << describeCaustics(*water) << std::endl;
+              << ", caustics " << describeCaustics(*water, water->getViewReport(viewer.getCamera())) << std::endl;
     auto frameMs = [&](const Configuration& c) { return osgWaterApps::medianOfBlockMeans(c.ms, size_t(perBlock)); };
     const double first = frameMs(configs[0]), last = frameMs(configs.back());
     std::printf("frame time, median over %d alternating blocks of the mean of %d frames:\n", blocks, perBlock);

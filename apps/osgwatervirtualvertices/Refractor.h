@@ -1,7 +1,7 @@
 // The refractors of the error-volume experiment: a faceted membrane (what the virtual-vertex
 // algorithm sees) and the exact surface it stands for (what the exact ray cast sees).
 #pragma once
-#include <osgWater/VirtualVertices>
+#include "optics/VirtualVertices.h"
 #include <glm/glm.hpp>
 #include <memory>
 

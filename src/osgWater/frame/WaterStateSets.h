@@ -1,0 +1,50 @@
+/* osgWater - natural water for OpenSceneGraph */
+#ifndef OSGWATER_WATERSTATESETS
+#define OSGWATER_WATERSTATESETS 1
+
+#include <osgWater/Export>
+#include <osgWater/Statistics>
+#include <osg/StateSet>
+#include <osg/TextureCubeMap>
+
+namespace osgWater {
+
+class WaterSettings;
+class WaterSurface;
+
+
+//! The StateSets shared by every view: the scene program for the WaterNode's children, the water
+//! program with the settings' uniforms and defines, and the guest program that replaces it where
+//! the water is drawn inside another water's pass (above the water StateSet: same uniforms). Refreshed from the settings and
+//! surface when their revisions change, and from the time every frame.
+class OSGWATER_EXPORT WaterStateSets
+{
+public:
+    WaterStateSets();
+
+    osg::StateSet* getSceneStateSet() const { return _scene.get(); }
+    osg::StateSet* getWaterStateSet() const { return _water.get(); }
+    osg::StateSet* getGuestStateSet() const { return _guest.get(); }
+    //! The view's surface pass's render bin (PASS_SURFACE: before the scene's).
+    osg::StateSet* getSurfaceBinStateSet() const { return _surfaceBin.get(); }
+
+    //! Uniforms and defines from settings and surface (call when either changed).
+    void applySettings(const WaterSettings& settings, const WaterSurface& surface, DebugOutput debug);
+    //! Wave phases for simulation time t.
+    void applyTime(const WaterSurface& surface, double t);
+    //! The plane-offset lookups' planes: height above the level for the reflection, depth below it
+    //! for the refraction, metres.
+    void applyLookupPlanes(const osg::Vec2f& heightDepth);
+    //! The environment cube map the water program reads (OSGWATER_ENVIRONMENT), or none.
+    void setEnvironmentMap(osg::TextureCubeMap* map);
+
+    void resizeGLObjectBuffers(unsigned int maxSize);
+    void releaseGLObjects(osg::State* state) const;
+
+private:
+    osg::ref_ptr<osg::StateSet> _scene, _water, _guest, _surfaceBin;
+};
+
+}
+
+#endif

@@ -1,0 +1,65 @@
+#include "serialize/PreciseSerializer.h"
+#include <osg/Math>
+#include <charconv>
+#include <cstdio>
+
+namespace osgWater {
+namespace detail {
+
+namespace {
+
+double readBack(const char* text, float) { return osg::asciiToDouble(text); } // what OSG reads floats with
+double readBack(const char* text, double) { return parseDouble(text); }
+
+template <typename T> int shortest(T v, int most)
+{
+    char text[64];
+    for (int digits = 6; digits < most; ++digits) {
+        std::snprintf(text, sizeof(text), "%.*g", digits, double(v));
+        if (T(readBack(text, v)) == v) return digits;
+    }
+    return most;
+}
+
+int slot()
+{
+    static const int index = std::ios_base::xalloc();
+    return index;
+}
+
+template <int D> std::ostream& setDigits(std::ostream& s)
+{
+    s.iword(slot()) = long(s.precision(D));
+    return s;
+}
+
+}
+
+double parseDouble(const std::string& text)
+{
+    double v = 0.0;
+    const char* end = text.data() + text.size();
+    const std::from_chars_result r = std::from_chars(text.data(), end, v);
+    if (r.ec == std::errc() && r.ptr == end) return v;
+    return osg::asciiToDouble(text.c_str()); // "1e999", hex and the like: OSG's reading, as before
+}
+
+int digitsFor(float v) { return shortest(v, 9); }
+int digitsFor(double v) { return shortest(v, 17); }
+
+Manipulator setPrecision(int digits)
+{
+    static const Manipulator table[] = { setDigits<6>, setDigits<7>, setDigits<8>, setDigits<9>,
+                                         setDigits<10>, setDigits<11>, setDigits<12>, setDigits<13>,
+                                         setDigits<14>, setDigits<15>, setDigits<16>, setDigits<17> };
+    return table[std::min(std::max(digits, 6), 17) - 6];
+}
+
+std::ostream& restorePrecision(std::ostream& s)
+{
+    s.precision(std::streamsize(s.iword(slot())));
+    return s;
+}
+
+}
+}
