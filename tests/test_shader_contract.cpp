@@ -126,3 +126,65 @@ TEST(ShaderContract, TheExpandedShadersIncludeTheContractBeforeUsingIt)
         EXPECT_EQ(src.find("#define OSGWATER_REFRACTION_ONE_STEP", contract + 1), std::string::npos) << name;
     }
 }
+
+namespace {
+
+// every string literal in the library's sources
+std::set<std::string> librarySourceLiterals()
+{
+    std::set<std::string> literals;
+    const std::regex literal(R"re("([A-Za-z_][A-Za-z_0-9]*)")re");
+    std::vector<std::string> dirs = { OSGWATER_LIBRARY_SOURCE_DIR };
+    while (!dirs.empty()) {
+        const std::string dir = dirs.back();
+        dirs.pop_back();
+        DIR* d = opendir(dir.c_str());
+        if (!d) continue;
+        while (dirent* e = readdir(d)) {
+            const std::string n = e->d_name, path = dir + "/" + n;
+            if (n == "." || n == "..") continue;
+            if (e->d_type == DT_DIR) { dirs.push_back(path); continue; }
+            std::ifstream in(path.c_str());
+            std::stringstream ss;
+            ss << in.rdbuf();
+            const std::string text = ss.str();
+            for (std::sregex_iterator it(text.begin(), text.end(), literal), end; it != end; ++it) literals.insert((*it)[1]);
+        }
+        closedir(d);
+    }
+    return literals;
+}
+
+}
+
+// Every uniform a shader declares is one the library sets by name (whole, or a pass's prefix and a
+// suffix), and every uniform name the library sets is declared by a shader: a name misspelt on
+// either side fails here, not as a black or silently wrong picture
+TEST(ShaderContract, EveryDeclaredUniformIsSetByTheLibraryAndBack)
+{
+    const std::set<std::string> literals = librarySourceLiterals();
+    ASSERT_GE(literals.size(), 100u) << OSGWATER_LIBRARY_SOURCE_DIR;
+    const std::regex declaration(R"(uniform\s+\w+\s+(osgWater_\w+))");
+    std::set<std::string> declared;
+    for (const std::string& f : shaderFiles()) {
+        const std::string text = readFile(f);
+        for (std::sregex_iterator it(text.begin(), text.end(), declaration), end; it != end; ++it)
+            declared.insert((*it)[1]);
+    }
+    ASSERT_GE(declared.size(), 60u);
+    auto setByLibrary = [&](const std::string& u) {
+        if (literals.count(u)) return true;
+        for (const std::string& prefix : literals)
+            if (prefix.size() < u.size() && u.compare(0, prefix.size(), prefix) == 0 &&
+                literals.count(u.substr(prefix.size())))
+                return true;
+        return false;
+    };
+    for (const std::string& u : declared) EXPECT_TRUE(setByLibrary(u)) << u << " is declared but never set";
+    for (const std::string& l : literals) {
+        if (l.compare(0, 9, "osgWater_") != 0) continue;
+        bool used = declared.count(l) > 0;
+        for (const std::string& u : declared) used = used || u.compare(0, l.size(), l) == 0;
+        EXPECT_TRUE(used) << l << " is set by the library but no shader declares it";
+    }
+}

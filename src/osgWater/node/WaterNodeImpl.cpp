@@ -13,7 +13,8 @@ using namespace osgWater;
 
 WaterNodeImpl::WaterNodeImpl(WaterNode& node)
     : _node(node), _settings(new WaterSettings), _surface(new WaterSurface), _debug(DEBUG_NONE),
-      _settingsRevision(~0u), _surfaceRevision(~0u), _appliedSettings(nullptr), _appliedSurface(nullptr)
+      _settingsRevision(~0u), _surfaceRevision(~0u), _appliedSettings(nullptr), _appliedSurface(nullptr),
+      _caustics(node, _states)
 {
     _underwater = new UnderwaterView;
     _surfaceTimer = new GpuTimer;
@@ -26,7 +27,8 @@ WaterNodeImpl::WaterNodeImpl(WaterNode& node, const WaterNodeImpl& o, const osg:
       _settings(o._settings.valid() ? osg::clone(o._settings.get(), copyop) : new WaterSettings),
       _surface(o._surface.valid() ? osg::clone(o._surface.get(), copyop) : new WaterSurface),
       _debug(o._debug),
-      _settingsRevision(~0u), _surfaceRevision(~0u), _appliedSettings(nullptr), _appliedSurface(nullptr)
+      _settingsRevision(~0u), _surfaceRevision(~0u), _appliedSettings(nullptr), _appliedSurface(nullptr),
+      _caustics(node, _states)
 {
     _underwater = new UnderwaterView;
     _surfaceTimer = new GpuTimer;
@@ -61,9 +63,7 @@ void WaterNodeImpl::setPassTimingEnabled(bool on)
     _passTiming = on;
     _surfaceTimer->setEnabled(on);
     _underwater->setTimingEnabled(on);
-    OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_causticsMutex);
-    if (_caustics.valid()) _caustics->setTimingEnabled(on);
-    if (_reflectedCaustics.valid()) _reflectedCaustics->setTimingEnabled(on);
+    _caustics.setTimingEnabled(on);
 }
 
 double WaterNodeImpl::getPassMilliseconds(osg::Camera* camera, PassId pass) const
@@ -72,11 +72,7 @@ double WaterNodeImpl::getPassMilliseconds(osg::Camera* camera, PassId pass) cons
     const GlowPasses* glow = p ? p->getGlow() : nullptr;
     switch (pass) {
     case PASS_SUN_DEPTH:
-    case PASS_PHOTONS: {
-        OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_causticsMutex);
-        if (!_caustics.valid() || !_passTiming) return -1.0;
-        return pass == PASS_SUN_DEPTH ? _caustics->getDepthMilliseconds() : _caustics->getMilliseconds();
-    }
+    case PASS_PHOTONS: return _passTiming ? _caustics.getMilliseconds(pass) : -1.0;
     case PASS_REFLECTION: return p ? p->getReflectionMilliseconds() : -1.0;
     case PASS_REFRACTION: return p ? p->getRefractionMilliseconds() : -1.0;
     case PASS_GLOW_HIGHLIGHT: return glow ? glow->getHighlightMilliseconds() : -1.0;
@@ -94,21 +90,13 @@ ViewReport WaterNodeImpl::getViewReport(osg::Camera* camera) const
     ViewReport r;
     _views.report(camera, r); // the plan, the view's own passes, under the map's lock
     for (int i = 0; i < PASS_COUNT; ++i) r.milliseconds[i] = getPassMilliseconds(camera, PassId(i));
-    OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_causticsMutex);
-    if (_caustics.valid()) {
-        r.caustics = true;
-        r.causticsGather = _caustics->getActiveGather();
-        r.causticsGatherSettled = _caustics->isAutoGatherSettled();
-        r.causticsResolution = _caustics->getResolution();
-        r.photonGridSize = _caustics->getGridSize();
-    }
+    _caustics.report(r);
     return r;
 }
 
 WaterSettings::CausticsGather WaterNodeImpl::getActiveCausticsGather() const
 {
-    OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_causticsMutex);
-    return _caustics.valid() ? _caustics->getActiveGather() : WaterSettings::GATHER_AUTO;
+    return _caustics.getActiveGather();
 }
 
 namespace {
@@ -173,9 +161,7 @@ void WaterNodeImpl::resizeGLObjectBuffers(unsigned int maxSize)
         OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_environmentMutex);
         if (_environment.valid()) _environment->resizeGLObjectBuffers(maxSize);
     }
-    OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_causticsMutex);
-    if (_caustics.valid()) _caustics->resizeGLObjectBuffers(maxSize);
-    if (_reflectedCaustics.valid()) _reflectedCaustics->resizeGLObjectBuffers(maxSize);
+    _caustics.resizeGLObjectBuffers(maxSize);
 }
 
 void WaterNodeImpl::releaseGLObjects(osg::State* state) const
@@ -190,12 +176,7 @@ void WaterNodeImpl::releaseGLObjects(osg::State* state) const
         OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_environmentMutex);
         if (_environment.valid()) _environment->releaseGLObjects(state);
     }
-    OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_causticsMutex);
-    if (_caustics.valid()) _caustics->releaseGLObjects(state);
-    if (_reflectedCaustics.valid()) _reflectedCaustics->releaseGLObjects(state);
-    // released caustics hold nothing any more: the next frame renders them again
-    if (state) _causticsRendered.erase(state->getContextID());
-    else _causticsRendered.clear();
+    _caustics.releaseGLObjects(state);
 }
 
 void WaterNodeImpl::traverse(osg::NodeVisitor& nv)
@@ -282,7 +263,7 @@ void WaterNodeImpl::cull(osgUtil::CullVisitor& cv)
 
     // 2. which passes run: the pass table, planned from the facts (a pass nothing reads does not)
     PassPlan plan = planPasses(v.facts);
-    if ((plan.runs(PASS_PHOTONS) || plan.runs(PASS_SUN_DEPTH)) && !claimCaustics(v, plan)) {
+    if ((plan.runs(PASS_PHOTONS) || plan.runs(PASS_SUN_DEPTH)) && !_caustics.claim(v.frameNumber, v.contextID, v.time, v.facts, plan, v.support)) {
         v.facts.causticsDone = true; // another view on this context rendered them meanwhile
         plan = planPasses(v.facts);
     }
@@ -371,7 +352,10 @@ WaterNodeImpl::ViewFrame WaterNodeImpl::gatherFacts(osgUtil::CullVisitor& cv)
     }
 
     v.lighting = _views.getLighting(camera);
-    prepareCaustics(v);
+    // the shared caustics: aimed once per frame; whether this context has them already and whether
+    // its sun depth map is stale go into the facts
+    _caustics.prepare(v.frameNumber, v.contextID, v.time, clearance(), v.support,
+                      [&](const char* what, int size) { return fitTexture(what, size, v.support); }, v.facts);
     return v;
 }
 
@@ -406,8 +390,7 @@ SceneLighting WaterNodeImpl::sceneLighting(const ViewFrame& v, const PassPlan& p
     // the caustics, when this frame has them on this context (rendered now or by another view)
     // (per pixel, whenever the sun's depth map holds: the scene program makes them itself)
     if (v.facts.caustics && (plan.runs(PASS_GATHER) || v.facts.causticsDone || v.facts.causticsInScene)) {
-        l.caustics = &_caustics->getLighting();
-        if (v.facts.reflectedCaustics) l.reflectedCaustics = &_reflectedCaustics->getLighting();
+        _caustics.light(v.facts, l);
     }
     return l;
 }
@@ -424,8 +407,7 @@ void WaterNodeImpl::cullPass(PassId pass, osgUtil::CullVisitor& cv, const ViewFr
     case PASS_SUN_DEPTH:
     case PASS_PHOTONS:
     case PASS_GATHER:
-        _caustics->cullPass(pass, cv);
-        if (v.facts.reflectedCaustics) _reflectedCaustics->cullPass(pass, cv);
+        _caustics.cull(pass, cv, v.facts);
         break;
     case PASS_REFLECTION: p->getReflectionCamera()->accept(cv); break;
     case PASS_REFRACTION: p->getRefractionCamera()->accept(cv); break;
@@ -490,14 +472,7 @@ void WaterNodeImpl::updateSceneFacts(const osg::BoundingSphere& children)
     // the caustics' window, and the flat bed of tileable caustics, come from the lit water too
     const bool focus = s.getCausticsEnabled() && (s.getCausticsFocused() || s.getCausticsTileSize() > 0.0f);
     const double level = _surface->getLevel();
-    LitWater lit;
-    {
-        OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_causticsMutex);
-        // the rays along the sun are walked only for what uses them, and again only on a change
-        _sceneBoxes.update(_node, children, _surface->getBoundingBox(), level + clearance(),
-                           s.getSunDirection(), planes || focus);
-        lit = _sceneBoxes.litWater();
-    }
+    const LitWater lit = _caustics.updateScene(children, level + clearance(), planes || focus);
     // the planes: as set, or the scene's (see WaterSettings::setReflectionPlaneHeight)
     float height = s.getReflectionPlaneHeight(), depth = s.getRefractionPlaneDepth();
     if (height <= 0.0f) height = lit.shaded && lit.meanShadeZ > level ? float(lit.meanShadeZ - level) : s.getReflectionScale();
@@ -562,121 +537,8 @@ double WaterNodeImpl::clearance() const
     return _surface->getMaxAmplitude() + _settings->getClipOffset();
 }
 
-void WaterNodeImpl::prepareCaustics(ViewFrame& v)
-{
-    const WaterSettings& s = *_settings;
-    if (!s.getCausticsEnabled()) return;
-    OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_causticsMutex);
-    if (_causticsAimed != v.frameNumber) { // once per frame: every view and context shares them
-        _causticsAimed = v.frameNumber;
-        CausticsCamera::Frame f;
-        f.towardsSun = s.getSunDirection();
-        f.water = _surface->getBoundingBox();
-        f.level = _surface->getLevel();
-        f.clearance = clearance();
-        f.scene = _sceneBoxes.whole(); // brought up to date by the update traversal (updateSceneFacts)
-        f.litWater = _sceneBoxes.litWater().box;
-        // tileable caustics over a flat bed at the lit water's mean depth (1 m without lit water)
-        f.tile = s.getCausticsTileSize();
-        f.tileBedZ = _sceneBoxes.litWater().box.valid() ? std::min(_sceneBoxes.litWater().meanBedZ, f.level - 1e-3)
-                                                         : f.level - 1.0;
-        if (f.tile > 0.0 && !(_surface->usesGrid() && WaterSurface::wavesTileOver(_surface->getWaves(), f.tile)) &&
-            !_warnedTile.exchange(true))
-            OSG_WARN << "osgWater: WaterNode \"" << _node.getName() << "\": the waves do not repeat over the caustics tile of "
-                     << f.tile << " m: the tiled caustics show seams" << std::endl;
-        f.surface = _surface->getUniformMesh(); // seen from the sun: the uniform grid
-        f.settings = &s;
-        _causticsNeeded = CausticsCamera::needed(f);
-        _reflectedNeeded = false;
-        if (_causticsNeeded) {
-            // the focused window keeps the texel spacing the settings give the whole one, and the
-            // photons per texel exactly (a ratio off by a rounding makes a moire of 3s and 4s)
-            const int setResolution = fitTexture("causticsResolution", s.getCausticsResolution(), v.support);
-            const int setGrid = fitTexture("photonGridSize", s.getPhotonGridSize(), v.support);
-            // (a tile keeps the spacing too: its counts shrink with its side)
-            const int resolution = focusedCount(setResolution, f.tile > 0.0 ? CausticsCamera::tileRatio(f)
-                                                                            : CausticsCamera::focusRatio(f));
-            const int grid = std::max(1, int(std::lround(double(setGrid) * resolution / setResolution)));
-            if (!_caustics.valid() || !_caustics->matches(resolution, grid, v.support.floatTargets))
-            {
-                _caustics = new CausticsCamera(&_node, _states.getSceneStateSet(), _states.getWaterStateSet(),
-                                               resolution, grid, v.support.floatTargets);
-                _caustics->setTimingEnabled(_passTiming);
-            }
-            _caustics->update(f);
-            // the reflective caustics: over the whole window (the lit water is where refracted light lands)
-            _reflectedNeeded = CausticsCamera::reflectedNeeded(f);
-            if (!_reflectedNeeded) {
-                _reflectedCaustics = nullptr;
-            } else {
-                if (!_reflectedCaustics.valid() || !_reflectedCaustics->matches(setResolution, setGrid, v.support.floatTargets)) {
-                    _reflectedCaustics = new CausticsCamera(&_node, _states.getSceneStateSet(), _states.getWaterStateSet(),
-                                                            setResolution, setGrid, v.support.floatTargets, true);
-                    _reflectedCaustics->setTimingEnabled(_passTiming);
-                }
-                _reflectedCaustics->update(f);
-            }
-            const CausticsAim key{ _caustics.get(), _reflectedCaustics.get(), _settings.get(), _surface.get(),
-                                   _settings->getRevision(), _surface->getRevision(), _caustics->getDepthVersion(),
-                                   _reflectedNeeded ? _reflectedCaustics->getDepthVersion() : 0u };
-            if (key != _causticsAimKey) {
-                _causticsAimKey = key;
-                ++_causticsAim;
-            }
-        }
-    }
-    if (!_causticsNeeded || !_caustics.valid()) return;
-    v.facts.caustics = true;
-    v.facts.causticsInScene = _caustics->getLighting().procedural;
-    auto done = _causticsRendered.find(v.contextID);
-    v.facts.causticsDone = done != _causticsRendered.end() &&
-                           (done->second.frame == v.frameNumber ||
-                            (_skipping && causticsStillHold(done->second.aim, done->second.time, v.time)));
-    v.facts.sunDepthStale = _caustics->depthStale(v.contextID);
-    v.facts.reflectedCaustics = _reflectedNeeded && _reflectedCaustics.valid();
-    if (v.facts.reflectedCaustics) v.facts.sunDepthStale = v.facts.sunDepthStale || _reflectedCaustics->depthStale(v.contextID);
-}
-
-bool WaterNodeImpl::causticsStillHold(unsigned int aim, double renderedAt, double t) const
-{
-    // the automatic gather times its candidates on frames that render caustics: every frame until it chose
-    const bool choosing = _settings->getCausticsGather() == WaterSettings::GATHER_AUTO && !_caustics->isAutoGatherSettled();
-    return aim == _causticsAim && !choosing && (t == renderedAt || std::abs(t - renderedAt) <= causticsHoldTime());
-}
-
-double WaterNodeImpl::causticsHoldTime() const
-{
-    if (!_caustics.valid() || !_skipping) return 0.0;
-    // the pattern is a sum of the waves' patterns, each travelling at its phase speed
-    const double texel = _caustics->getTexelSize();
-    const double speed = _surface->getMaxPhaseSpeed();
-    if (speed == 0.0) return std::numeric_limits<double>::infinity();
-    return _settings->getCausticsMotionTolerance() * texel / speed;
-}
 
 double WaterNodeImpl::getCausticsHoldTime() const
 {
-    OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_causticsMutex);
-    return causticsHoldTime();
-}
-
-bool WaterNodeImpl::claimCaustics(const ViewFrame& v, const PassPlan& plan)
-{
-    OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_causticsMutex);
-    CausticsRendered& last = _causticsRendered[v.contextID];
-    if (last.frame == v.frameNumber) return false;
-    last.frame = v.frameNumber;
-    last.aim = _causticsAim;
-    last.time = v.time;
-    const bool reflected = v.facts.reflectedCaustics && _reflectedCaustics.valid();
-    if (plan.runs(PASS_SUN_DEPTH)) {
-        _caustics->markDepthDrawn(v.contextID);
-        if (reflected) _reflectedCaustics->markDepthDrawn(v.contextID);
-    }
-    if (plan.runs(PASS_PHOTONS) && _gatherResolved != v.frameNumber) { // the gather follows frames that gather
-        _gatherResolved = v.frameNumber;
-        _caustics->resolveGather(*_settings, v.support);
-        if (reflected) _reflectedCaustics->resolveGather(*_settings, v.support);
-    }
-    return true;
+    return _caustics.getHoldTime();
 }

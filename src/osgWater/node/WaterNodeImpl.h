@@ -5,7 +5,7 @@
 #include <osgWater/WaterNode>
 #include "frame/WaterStateSets.h"
 #include "frame/ViewPasses.h"
-#include "caustics/CausticsCamera.h"
+#include "caustics/CausticsScheduler.h"
 #include "passes/EnvironmentMap.h"
 #include "frame/SceneBounds.h"
 #include "passes/UnderwaterView.h"
@@ -36,9 +36,9 @@ public:
     //! The passes the view of `camera` ran on its last frame.
     PassPlan getPassPlan(osg::Camera* camera) const { return _views.getPlan(camera); }
     //! The caustics passes (shared by all views; created on the first frame that needs them), or nullptr.
-    CausticsCamera* getCausticsCamera() const { return _caustics.get(); }
+    CausticsCamera* getCausticsCamera() const { return _caustics.getCamera(); }
     //! The reflective caustics' passes, or nullptr.
-    CausticsCamera* getReflectedCausticsCamera() const { return _reflectedCaustics.get(); }
+    CausticsCamera* getReflectedCausticsCamera() const { return _caustics.getReflectedCamera(); }
     //! The passes drawing the environment map, or nullptr (off, or the user's map).
     EnvironmentMap* getEnvironmentPasses() const { return _environment.get(); }
     //! The near-plane cap and the underwater backdrop (shared by all views).
@@ -90,16 +90,6 @@ public:
     void refreshStates();
     //! Whether each pass ran and its last GPU time, into the view's osg::Stats for this frame.
     void recordPassStats(osgUtil::CullVisitor& cv, const ViewFrame& v, const PassPlan& plan) const;
-    //! The shared caustics for this frame: aimed once per frame; whether this context has them
-    //! already and whether its sun depth map is stale go into the facts.
-    void prepareCaustics(ViewFrame& v);
-    //! Whether caustics rendered on a context at time `renderedAt` for aim `aim` still hold at
-    //! time `t`: nothing but time changed and the waves moved their pattern by at most the
-    //! settings' motion tolerance in caustics texels.
-    bool causticsStillHold(unsigned int aim, double renderedAt, double t) const;
-    double causticsHoldTime() const; //!< getCausticsHoldTime() under the caustics mutex
-    //! This view renders the frame's caustics on its context, unless another view claimed them first.
-    bool claimCaustics(const ViewFrame& v, const PassPlan& plan);
     //! In the update traversal: the children's boxes and the lit water (the caustics' window), and
     //! the plane-offset lookups' planes.
     void updateSceneFacts(const osg::BoundingSphere& children);
@@ -131,38 +121,13 @@ public:
     const void* _appliedSettings;
     const void* _appliedSurface;
 
-    // caustics: one set of passes for all views, aimed once per frame, rendered once per frame and context
     osg::ref_ptr<UnderwaterView> _underwater;
-    mutable OpenThreads::Mutex _causticsMutex, _supportMutex;
-    osg::ref_ptr<CausticsCamera> _caustics;
-    osg::ref_ptr<CausticsCamera> _reflectedCaustics;     // the reflective caustics' passes, when on
-    bool _causticsNeeded = false;                        // this frame's verdict (the frame below)
-    bool _reflectedNeeded = false;
-    unsigned int _causticsAimed = ~0u;                   // the frame they were aimed for
-    unsigned int _gatherResolved = ~0u;                  // the frame whose gather was chosen
-    // what the caustics depend on besides time: a new number whenever it changes
-    struct CausticsAim {
-        const void* camera = nullptr;
-        const void* reflectedCamera = nullptr;
-        const void* settingsObject = nullptr;
-        const void* surfaceObject = nullptr;
-        unsigned int settings = ~0u, surface = ~0u, depth = ~0u, reflectedDepth = ~0u;
-        bool operator!=(const CausticsAim& o) const
-        {
-            return camera != o.camera || reflectedCamera != o.reflectedCamera || settingsObject != o.settingsObject ||
-                   surfaceObject != o.surfaceObject || settings != o.settings || surface != o.surface ||
-                   depth != o.depth || reflectedDepth != o.reflectedDepth;
-        }
-    } _causticsAimKey;
-    unsigned int _causticsAim = 0;
-    struct CausticsRendered { unsigned int frame = ~0u, aim = ~0u; double time = 0.0; };
-    mutable std::map<unsigned int, CausticsRendered> _causticsRendered; // context -> last rendering
+    mutable OpenThreads::Mutex _supportMutex;
+    CausticsScheduler _caustics; // one set of passes for all views (after _states, which it reads)
     std::map<unsigned int, CausticsSupport> _support; // context -> what it can do (asked once)
-    SceneBoxes _sceneBoxes; // the children's box and the lit water (under the caustics mutex)
     osg::Vec2f _lookupPlanes{ 1.0f, 1.0f }; // in use: reflection plane height, refraction plane depth
     std::set<std::string> _fitWarnings; // what fitTexture() has said already
     std::atomic<bool> _warnedUnevenScale{ false };
-    std::atomic<bool> _warnedTile{ false }; // the waves do not repeat over the caustics tile (said once)
     // the environment cube map: the user's, or drawn from the scene (its passes)
     osg::ref_ptr<osg::TextureCubeMap> _userEnvironment;
     osg::ref_ptr<EnvironmentMap> _environment;
