@@ -175,3 +175,25 @@ TEST(Glow, TargetFollowsTheViewportAndTheResolutionSetting)
     EXPECT_EQ(img->s(), 50);
     EXPECT_TRUE(allFinite(img.get()));
 }
+
+// A view's glow passes remade for a new size take the programs the water made already (the program
+// library), instead of building and compiling them again
+TEST(Glow, PassesRemadeForANewSizeKeepTheirPrograms)
+{
+    Harness h(200, 150);
+    REQUIRE_GL(h);
+    osg::ref_ptr<WaterNode> water = sunnyWater(osg::Vec3(0.0f, 0.866f, 0.5f));
+    h.setScene(water.get());
+    h.lookAt(osg::Vec3d(0, 0, 3), osg::Vec3d(0, 10, 0), 45.0);
+    h.frame(1.0);
+    ViewPasses* passes = osgWater::internals(*water).getViewPasses(h.camera());
+    ASSERT_TRUE(passes && passes->getGlow());
+    osg::ref_ptr<GlowPasses> before = passes->getGlow();
+    const osg::StateAttribute* program = before->getComposite()->getStateSet()->getAttribute(osg::StateAttribute::PROGRAM);
+    const size_t programs = osgWater::internals(*water).getStateSets().getPrograms().size();
+    h.camera()->setViewport(0, 0, 100, 80); // a resized window: new glow passes
+    h.frame(1.1);
+    ASSERT_NE(passes->getGlow(), before.get()) << "the glow passes should have been remade";
+    EXPECT_EQ(passes->getGlow()->getComposite()->getStateSet()->getAttribute(osg::StateAttribute::PROGRAM), program);
+    EXPECT_EQ(osgWater::internals(*water).getStateSets().getPrograms().size(), programs);
+}

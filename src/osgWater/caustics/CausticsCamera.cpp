@@ -49,8 +49,8 @@ const char* osgWater::causticsGatherLabel(WaterSettings::CausticsGather g)
 }
 
 CausticsCamera::CausticsCamera(osg::Group* scene, osg::StateSet* sceneState, osg::StateSet* waterState,
-                               int resolution, int gridSize, bool floatTargets, bool reflected)
-    : PassCamera(scene, { sceneState, depthOnlyState() }, gridSize, gridSize, PASS_SUN_DEPTH), _floatTargets(floatTargets),
+                               ProgramLibrary& programs, int resolution, int gridSize, bool floatTargets, bool reflected)
+    : PassCamera(scene, { sceneState, depthOnlyState(programs) }, gridSize, gridSize, PASS_SUN_DEPTH), _floatTargets(floatTargets),
       _reflected(reflected)
 {
     setName(reflected ? "osgWater.ReflectedCausticsCamera" : "osgWater.CausticsCamera");
@@ -62,14 +62,14 @@ CausticsCamera::CausticsCamera(osg::Group* scene, osg::StateSet* sceneState, osg
     if (!reflected) {
         // what stands above the water shades it: the whole scene seen from the sun, unclipped
         // (the clipped map holds only the underwater scene the photons' search needs)
-        _shade = new PassCamera(scene, { sceneState, depthOnlyState() }, gridSize, gridSize, PASS_SUN_DEPTH);
+        _shade = new PassCamera(scene, { sceneState, depthOnlyState(programs) }, gridSize, gridSize, PASS_SUN_DEPTH);
         _shade->setName("osgWater.SunShadeCamera");
         _shade->setDepthOnly();
         _shade->getDepthTexture()->setName("osgWater.sunShade");
     }
 
-    _photons = new PhotonCamera(waterState, gridSize, floatTargets);
-    _gather = new PhotonGather(_photons->getPhotonTexture(), gridSize, resolution, floatTargets, waterState);
+    _photons = new PhotonCamera(waterState, programs, gridSize, floatTargets);
+    _gather = new PhotonGather(_photons->getPhotonTexture(), programs, gridSize, resolution, floatTargets, waterState);
     _lighting.caustics = _gather->getCausticsTexture();
     _lighting.depth = _depth;
     _timer = new GpuTimer;
@@ -84,11 +84,11 @@ CausticsCamera::CausticsCamera(osg::Group* scene, osg::StateSet* sceneState, osg
     if (_shade.valid()) _shadeTimer->attach(_shade.get());
 }
 
-osg::StateSet* CausticsCamera::depthOnlyState()
+osg::StateSet* CausticsCamera::depthOnlyState(ProgramLibrary& programs)
 {
     osg::StateSet* ss = new osg::StateSet; // held by the camera's draw list
     ss->setName("osgWater.depthOnly");
-    ss->setAttribute(createProgram("osgWater.depth", "depth.vert", "depth.frag"));
+    ss->setAttribute(programs.get("osgWater.depth", "depth.vert", "depth.frag"));
     return ss;
 }
 

@@ -5,6 +5,7 @@
 #include "frame/PassCamera.h"
 #include "caustics/PhotonCamera.h"
 #include "caustics/PhotonGather.h"
+#include "shaders/ProgramLibrary.h"
 #include "frame/GpuTimer.h"
 #include <osg/BoundingBox>
 #include <map>
@@ -42,7 +43,7 @@ public:
     //! `reflected`: the reflective caustics (WaterSettings::setReflectiveCaustics): the scene above
     //! the water mirrored in the water plane takes the underwater scene's place, and the photons
     //! are the sun's reflection (PhotonCamera::setSun with a mirror).
-    CausticsCamera(osg::Group* scene, osg::StateSet* sceneState, osg::StateSet* waterState,
+    CausticsCamera(osg::Group* scene, osg::StateSet* sceneState, osg::StateSet* waterState, ProgramLibrary& programs,
                    int resolution, int gridSize, bool floatTargets, bool reflected = false);
 
     //! This frame's inputs, in the water's local frame.
@@ -151,7 +152,7 @@ public:
 
 protected:
     virtual ~CausticsCamera() {}
-    static osg::StateSet* depthOnlyState();
+    static osg::StateSet* depthOnlyState(ProgramLibrary& programs);
     WaterSettings::CausticsGather autoGather(const CausticsSupport& support);
 
     bool _floatTargets, _reflected, _tiled = false, _saidTiledMesh = false;

@@ -57,7 +57,8 @@ void CausticsScheduler::aim(unsigned int frame, double clearance, const Caustics
                                                                     : CausticsCamera::focusRatio(f));
     const int grid = std::max(1, int(std::lround(double(setGrid) * resolution / setResolution)));
     if (!_caustics.valid() || !_caustics->matches(resolution, grid, support.floatTargets)) {
-        _caustics = new CausticsCamera(&_water, _states.getSceneStateSet(), _states.getWaterStateSet(), resolution, grid,
+        _caustics = new CausticsCamera(&_water, _states.getSceneStateSet(), _states.getWaterStateSet(),
+                                       _states.getPrograms(), resolution, grid,
                                        support.floatTargets);
         _caustics->setTimingEnabled(_timing);
     }
@@ -69,6 +70,7 @@ void CausticsScheduler::aim(unsigned int frame, double clearance, const Caustics
     } else {
         if (!_reflected.valid() || !_reflected->matches(setResolution, setGrid, support.floatTargets)) {
             _reflected = new CausticsCamera(&_water, _states.getSceneStateSet(), _states.getWaterStateSet(),
+                                       _states.getPrograms(),
                                             setResolution, setGrid, support.floatTargets, true);
             _reflected->setTimingEnabled(_timing);
         }

@@ -1,4 +1,5 @@
 #include "caustics/PhotonCamera.h"
+#include "shaders/ProgramLibrary.h"
 #include "shaders/Shaders.h"
 #include "frame/PassCamera.h"
 #include "frame/DrawNodes.h"
@@ -7,7 +8,7 @@
 
 using namespace osgWater;
 
-PhotonCamera::PhotonCamera(osg::StateSet* waterState, int gridSize, bool floatTarget)
+PhotonCamera::PhotonCamera(osg::StateSet* waterState, ProgramLibrary& programs, int gridSize, bool floatTarget)
     : _size(gridSize), _waterState(waterState)
 {
     setName("osgWater.PhotonCamera");
@@ -23,7 +24,7 @@ PhotonCamera::PhotonCamera(osg::StateSet* waterState, int gridSize, bool floatTa
     _photonState = new osg::StateSet;
     _photonState->setName("osgWater.photon");
     _photonState->setDataVariance(osg::Object::DYNAMIC);
-    _photonState->setAttribute(createProgram("osgWater.photon", "photon.vert", "photon.frag"));
+    _photonState->setAttribute(programs.get("osgWater.photon", "photon.vert", "photon.frag"));
     // the search of optics.glsl reads "the refraction depth": here the sun's depth map
     _photonState->addUniform(new osg::Uniform("osgWater_RefractionDepth", int(UNIT_REFRACTION_DEPTH)));
     _photonState->addUniform(new osg::Uniform("osgWater_RefractionProj", osg::Matrixf()));

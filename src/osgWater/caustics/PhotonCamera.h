@@ -9,6 +9,8 @@
 
 namespace osgWater {
 
+class ProgramLibrary;
+
 //! Caustics pass 2 (thesis §8.1, §9.2): the water surface seen from the sun's orthographic camera,
 //! one photon per texel: (u, v, energy, 1) where the refracted sun ray meets the bed, found in the
 //! sun's depth map (shaders/photon.frag). Renders into a float RGBA target (16-bit unsigned
@@ -18,7 +20,7 @@ class OSGWATER_EXPORT PhotonCamera : public osg::Camera
 public:
     //! `waterState`: the water StateSet (waves, indices, Fresnel, attenuation), pushed under the
     //! photon program.
-    PhotonCamera(osg::StateSet* waterState, int gridSize, bool floatTarget);
+    PhotonCamera(osg::StateSet* waterState, ProgramLibrary& programs, int gridSize, bool floatTarget);
 
     //! The surface to draw, the sun's view and projection, and its depth map (pass 1). With
     //! `mirror` (the mirror in the water plane, water-local frame), the photons are the sun's

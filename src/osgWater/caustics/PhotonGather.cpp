@@ -1,4 +1,5 @@
 #include "caustics/PhotonGather.h"
+#include "shaders/ProgramLibrary.h"
 #include "caustics/PhotonSplat.h"
 #include "shaders/Shaders.h"
 #include "frame/PassCamera.h"
@@ -144,8 +145,8 @@ osg::Geode* geodeOf(osg::Drawable* d)
 
 }
 
-PhotonGather::PhotonGather(osg::Texture2D* photons, int gridSize, int resolution, bool floatTarget,
-                           osg::StateSet* waterState)
+PhotonGather::PhotonGather(osg::Texture2D* photons, ProgramLibrary& programs, int gridSize, int resolution,
+                           bool floatTarget, osg::StateSet* waterState)
     : _method(WaterSettings::GATHER_AUTO), _causticsMethod(WaterSettings::CAUSTICS_PHOTONS), _grid(gridSize),
       _resolution(resolution), _valueScale(floatTarget ? 1.0f : 16.0f), _photons(photons), _waterState(waterState)
 {
@@ -172,7 +173,7 @@ PhotonGather::PhotonGather(osg::Texture2D* photons, int gridSize, int resolution
 
     osg::StateSet* ss = getOrCreateStateSet();
     ss->setDataVariance(osg::Object::DYNAMIC); // the paths switch between frames
-    ss->setAttribute(createProgram("osgWater.splat", "splat.vert", "splat.frag"));
+    ss->setAttribute(programs.get("osgWater.splat", "splat.vert", "splat.frag"));
     ss->setAttributeAndModes(new osg::BlendFunc(GL_ONE, GL_ONE), osg::StateAttribute::ON);
     ss->setAttribute(new osg::Point(2.0f)); // 2x2 pixels: the tent's support
     ss->setMode(GL_DEPTH_TEST, osg::StateAttribute::OFF);
@@ -189,7 +190,7 @@ PhotonGather::PhotonGather(osg::Texture2D* photons, int gridSize, int resolution
     _proceduralState = new osg::StateSet;
     _proceduralState->setName("osgWater.procedural");
     _proceduralState->setDataVariance(osg::Object::DYNAMIC);
-    _proceduralState->setAttribute(createProgram("osgWater.procedural", "screen.vert", "procedural.frag"));
+    _proceduralState->setAttribute(programs.get("osgWater.procedural", "screen.vert", "procedural.frag"));
     _proceduralState->addUniform(new osg::Uniform("osgWater_ProceduralScale", 1.0f / _valueScale));
     _proceduralState->addUniform(new osg::Uniform("osgWater_SunBedDepth", int(UNIT_PASS_INPUT)));
 }

@@ -11,6 +11,8 @@
 
 namespace osgWater {
 
+class ProgramLibrary;
+
 //! Caustics pass 3: gathers the photon target into the caustics texture (power per area seen from
 //! the sun, in units of the sun's irradiance) by one of two methods (WaterSettings::CausticsMethod:
 //! photons splatted, or the area-ratio mesh whose vertices they are), one of three ways
@@ -27,7 +29,7 @@ public:
     //! `floatTarget` false: 16-bit unsigned normalised texture holding value / getValueScale().
     //! `waterState`: the water StateSet (waves, indices, Fresnel, extinction) the procedural path
     //! draws under.
-    PhotonGather(osg::Texture2D* photons, int gridSize, int resolution, bool floatTarget,
+    PhotonGather(osg::Texture2D* photons, ProgramLibrary& programs, int gridSize, int resolution, bool floatTarget,
                  osg::StateSet* waterState = nullptr);
     //! This frame's sun for CAUSTICS_PROCEDURAL, which gathers no photons: each texel's bed point,
     //! from the sun's depth map (`sunDepth`, the underwater scene) through `texToLocal` (sun texture

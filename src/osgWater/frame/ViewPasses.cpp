@@ -20,9 +20,10 @@ void setPassMatrices(osg::StateSet* ss, const std::string& prefix, const PassCam
 
 }
 
-ViewPasses::ViewPasses(osg::Group* scene, osg::StateSet* sceneState, osg::StateSet* waterState, osg::StateSet* lighting,
-                       const osg::Vec2i& reflectionSize, const osg::Vec2i& refractionSize)
-    : _scene(scene), _sceneState(sceneState), _waterState(waterState), _lighting(lighting)
+ViewPasses::ViewPasses(osg::Group* scene, osg::StateSet* sceneState, osg::StateSet* waterState,
+                       ProgramLibrary* programs, osg::StateSet* lighting, const osg::Vec2i& reflectionSize,
+                       const osg::Vec2i& refractionSize)
+    : _scene(scene), _sceneState(sceneState), _waterState(waterState), _programs(programs), _lighting(lighting)
 {
     _reflection = new ReflectionCamera(scene, sceneState, reflectionSize.x(), reflectionSize.y());
     _refraction = new RefractionCamera(scene, sceneState, refractionSize.x(), refractionSize.y());
@@ -51,7 +52,7 @@ ViewPasses::ViewPasses(osg::Group* scene, osg::StateSet* sceneState, osg::StateS
 GlowPasses* ViewPasses::getOrCreateGlow(int width, int height, bool floatTargets)
 {
     if (!_glow.valid() || !_glow->matches(width, height, floatTargets)) {
-        _glow = new GlowPasses(_scene, _sceneState.get(), _waterState.get(), width, height, floatTargets);
+        _glow = new GlowPasses(_scene, _sceneState.get(), _waterState.get(), *_programs, width, height, floatTargets);
         _glow->setTimingEnabled(_timing);
     }
     return _glow.get();
@@ -169,13 +170,13 @@ osg::StateSet* ViewPassesMap::getLighting(osg::Camera* camera)
 }
 
 ViewPasses* ViewPassesMap::get(osg::Camera* camera, osg::Group* scene, osg::StateSet* sceneState,
-                               osg::StateSet* waterState, const osg::Vec2i& reflectionSize,
+                               osg::StateSet* waterState, ProgramLibrary* programs, const osg::Vec2i& reflectionSize,
                                const osg::Vec2i& refractionSize)
 {
     OpenThreads::ScopedLock<OpenThreads::Mutex> lock(_mutex);
     Entry& e = entry(camera);
     if (!e.passes.valid() || !e.passes->matchesSizes(reflectionSize, refractionSize))
-        e.passes = new ViewPasses(scene, sceneState, waterState, e.lighting.get(), reflectionSize, refractionSize);
+        e.passes = new ViewPasses(scene, sceneState, waterState, programs, e.lighting.get(), reflectionSize, refractionSize);
     return e.passes.get();
 }
 

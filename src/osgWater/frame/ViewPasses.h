@@ -7,6 +7,7 @@
 #include "frame/GpuTimer.h"
 #include "passes/GlowPasses.h"
 #include "frame/PassTable.h"
+#include "shaders/ProgramLibrary.h"
 #include <osg/StateSet>
 #include <osg/Vec2i>
 #include <osg/observer_ptr>
@@ -23,8 +24,8 @@ class OSGWATER_EXPORT ViewPasses : public osg::Referenced
 {
 public:
     //! `lighting`: the view's own SceneLighting StateSet (ViewPassesMap::getLighting()).
-    ViewPasses(osg::Group* scene, osg::StateSet* sceneState, osg::StateSet* waterState, osg::StateSet* lighting,
-               const osg::Vec2i& reflectionSize, const osg::Vec2i& refractionSize);
+    ViewPasses(osg::Group* scene, osg::StateSet* sceneState, osg::StateSet* waterState, ProgramLibrary* programs,
+               osg::StateSet* lighting, const osg::Vec2i& reflectionSize, const osg::Vec2i& refractionSize);
 
     //! Aims the passes `plan` runs, applies `lighting` to each of them, and sets the water shader's
     //! inputs, its defines following what runs. (The view's own lighting is the caller's.)
@@ -66,6 +67,7 @@ protected:
     virtual ~ViewPasses() {}
     osg::Group* _scene; // the WaterNode: outlives its passes
     osg::ref_ptr<osg::StateSet> _sceneState, _waterState;
+    osg::ref_ptr<ProgramLibrary> _programs; // the water's: the glow passes take theirs from it
     osg::ref_ptr<ReflectionCamera> _reflection;
     osg::ref_ptr<RefractionCamera> _refraction;
     osg::ref_ptr<osg::StateSet> _lighting, _waterInputs;
@@ -85,7 +87,7 @@ public:
     osg::StateSet* getLighting(osg::Camera* camera);
     //! This camera's passes, made (or remade, when a texture size changed) on demand.
     ViewPasses* get(osg::Camera* camera, osg::Group* scene, osg::StateSet* sceneState, osg::StateSet* waterState,
-                    const osg::Vec2i& reflectionSize, const osg::Vec2i& refractionSize);
+                    ProgramLibrary* programs, const osg::Vec2i& reflectionSize, const osg::Vec2i& refractionSize);
     //! The passes a camera's view ran on its last frame (none before its first).
     void setPlan(osg::Camera* camera, const PassPlan& plan);
     PassPlan getPlan(osg::Camera* camera) const;

@@ -34,11 +34,11 @@ osg::Texture2D* whiteTexture()
 
 }
 
-WaterStateSets::WaterStateSets()
+WaterStateSets::WaterStateSets() : _programs(new ProgramLibrary)
 {
     _scene = new osg::StateSet;
     _scene->setName("osgWater.scene");
-    _scene->setAttribute(createProgram("osgWater.scene", "scene.vert", "scene.frag"));
+    _scene->setAttribute(_programs->get("osgWater.scene", "scene.vert", "scene.frag"));
     // geometry without a texture samples this white texel; children's own textures override it
     _scene->setTextureAttribute(UNIT_BASE, whiteTexture());
     _scene->addUniform(new osg::Uniform("osgWater_BaseTexture", int(UNIT_BASE)));
@@ -56,7 +56,7 @@ WaterStateSets::WaterStateSets()
 
     _water = new osg::StateSet;
     _water->setName("osgWater.water");
-    _water->setAttribute(createProgram("osgWater.water", "water.vert", "water.frag"));
+    _water->setAttribute(_programs->get("osgWater.water", "water.vert", "water.frag"));
     _water->addUniform(new osg::Uniform("osgWater_ReflectionTex", int(UNIT_REFLECTION)));
     _water->addUniform(new osg::Uniform("osgWater_RefractionTex", int(UNIT_REFRACTION)));
     _water->addUniform(new osg::Uniform("osgWater_RefractionDepth", int(UNIT_REFRACTION_DEPTH)));
@@ -91,7 +91,7 @@ WaterStateSets::WaterStateSets()
 
     _guest = new osg::StateSet;
     _guest->setName("osgWater.guest");
-    _guest->setAttribute(createProgram("osgWater.guest", "guest.vert", "guest.frag"));
+    _guest->setAttribute(_programs->get("osgWater.guest", "guest.vert", "guest.frag"));
 
     _surfaceBin = new osg::StateSet;
     _surfaceBin->setName("osgWater.surfaceBin");
@@ -161,6 +161,7 @@ void WaterStateSets::resizeGLObjectBuffers(unsigned int maxSize)
     _water->resizeGLObjectBuffers(maxSize);
     _guest->resizeGLObjectBuffers(maxSize);
     _surfaceBin->resizeGLObjectBuffers(maxSize);
+    _programs->resizeGLObjectBuffers(maxSize);
 }
 
 void WaterStateSets::releaseGLObjects(osg::State* state) const
@@ -169,6 +170,7 @@ void WaterStateSets::releaseGLObjects(osg::State* state) const
     _water->releaseGLObjects(state);
     _guest->releaseGLObjects(state);
     _surfaceBin->releaseGLObjects(state);
+    _programs->releaseGLObjects(state);
 }
 
 void WaterStateSets::setEnvironmentMap(osg::TextureCubeMap* map)

@@ -4,6 +4,7 @@
 
 #include <osgWater/Export>
 #include <osgWater/Statistics>
+#include "shaders/ProgramLibrary.h"
 #include <osg/StateSet>
 #include <osg/TextureCubeMap>
 
@@ -25,6 +26,8 @@ public:
     osg::StateSet* getSceneStateSet() const { return _scene.get(); }
     osg::StateSet* getWaterStateSet() const { return _water.get(); }
     osg::StateSet* getGuestStateSet() const { return _guest.get(); }
+    //! The water's programs, shared by every pass that asks for the same one.
+    ProgramLibrary& getPrograms() const { return *_programs; }
     //! The view's surface pass's render bin (PASS_SURFACE: before the scene's).
     osg::StateSet* getSurfaceBinStateSet() const { return _surfaceBin.get(); }
 
@@ -42,6 +45,7 @@ public:
     void releaseGLObjects(osg::State* state) const;
 
 private:
+    osg::ref_ptr<ProgramLibrary> _programs; // first: the state sets below take theirs from it
     osg::ref_ptr<osg::StateSet> _scene, _water, _guest, _surfaceBin;
 };
 

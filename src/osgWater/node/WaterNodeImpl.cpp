@@ -16,7 +16,7 @@ WaterNodeImpl::WaterNodeImpl(WaterNode& node)
       _settingsRevision(~0u), _surfaceRevision(~0u), _appliedSettings(nullptr), _appliedSurface(nullptr),
       _caustics(node, _states)
 {
-    _underwater = new UnderwaterView;
+    _underwater = new UnderwaterView(_states.getPrograms());
     _surfaceTimer = new GpuTimer;
     _surfaceTimer->setEnabled(false);
     refreshStates();
@@ -30,7 +30,7 @@ WaterNodeImpl::WaterNodeImpl(WaterNode& node, const WaterNodeImpl& o, const osg:
       _settingsRevision(~0u), _surfaceRevision(~0u), _appliedSettings(nullptr), _appliedSurface(nullptr),
       _caustics(node, _states)
 {
-    _underwater = new UnderwaterView;
+    _underwater = new UnderwaterView(_states.getPrograms());
     _surfaceTimer = new GpuTimer;
     setSkippingEnabled(o._skipping);
     setPassTimingEnabled(o._passTiming);
@@ -370,6 +370,7 @@ ViewPasses* WaterNodeImpl::viewPasses(osgUtil::CullVisitor& cv, const ViewFrame&
         return osg::Vec2i(fitTexture(what, size.x(), v.support), fitTexture(what, size.y(), v.support));
     };
     ViewPasses* passes = _views.get(cv.getCurrentCamera(), &_node, _states.getSceneStateSet(), _states.getWaterStateSet(),
+                                    &_states.getPrograms(),
                                     target("reflection target", s.getReflectionTextureSize()),
                                     target("refraction target", s.getRefractionTextureSize()));
     passes->setTimingEnabled(_passTiming);

@@ -1,4 +1,5 @@
 #include "passes/GlowPasses.h"
+#include "shaders/ProgramLibrary.h"
 #include "frame/PassMath.h"
 #include "frame/ScreenTriangle.h"
 #include "shaders/Shaders.h"
@@ -31,8 +32,8 @@ osg::Texture2D* glowTarget(int w, int h, bool floatTarget, const char* name)
 
 }
 
-GlowPasses::GlowPasses(osg::Group* scene, osg::StateSet* sceneState, osg::StateSet* waterState, int width,
-                       int height, bool floatTargets)
+GlowPasses::GlowPasses(osg::Group* scene, osg::StateSet* sceneState, osg::StateSet* waterState,
+                       ProgramLibrary& programs, int width, int height, bool floatTargets)
     : _width(std::max(width, 1)), _height(std::max(height, 1)), _float(floatTargets)
 {
     _highlightTex = glowTarget(_width, _height, _float, "osgWater.glowHighlight");
@@ -52,9 +53,9 @@ GlowPasses::GlowPasses(osg::Group* scene, osg::StateSet* sceneState, osg::StateS
     // (and clips them alike) without its per-vertex lighting
     _occluderState = new osg::StateSet;
     _occluderState->setAttribute(new osg::ColorMask(false, false, false, false));
-    _occluderState->setAttribute(createProgram("osgWater.depth", "depth.vert", "depth.frag"));
+    _occluderState->setAttribute(programs.get("osgWater.depth", "depth.vert", "depth.frag"));
     _glowState = new osg::StateSet;
-    _glowState->setAttribute(createProgram("osgWater.glow", "water.vert", "glow.frag"));
+    _glowState->setAttribute(programs.get("osgWater.glow", "water.vert", "glow.frag"));
     _glowState->addUniform(new osg::Uniform("osgWater_EyeLocal", osg::Vec3f()));
     _glowState->addUniform(new osg::Uniform("osgWater_SunLocal", osg::Vec3f(0.0f, 0.0f, 1.0f)));
     _glowState->addUniform(new osg::Uniform("osgWater_GlowColor", osg::Vec3f(1.0f, 1.0f, 1.0f)));
@@ -68,7 +69,7 @@ GlowPasses::GlowPasses(osg::Group* scene, osg::StateSet* sceneState, osg::StateS
     _highlight->setCullCallback(_highlightDraw.get());
 
     _blurState = new osg::StateSet;
-    _blurState->setAttribute(createProgram("osgWater.glowBlur", "screen.vert", "blur.frag"));
+    _blurState->setAttribute(programs.get("osgWater.glowBlur", "screen.vert", "blur.frag"));
     _blurState->addUniform(new osg::Uniform("osgWater_GlowInput", int(UNIT_PASS_INPUT)));
     _blurState->addUniform(new osg::Uniform(osg::Uniform::FLOAT, "osgWater_GlowWeights", kMaxTaps + 1));
     _blurState->setMode(GL_CULL_FACE, osg::StateAttribute::OFF);
@@ -82,7 +83,7 @@ GlowPasses::GlowPasses(osg::Group* scene, osg::StateSet* sceneState, osg::StateS
 
     _composite = makeScreenTriangle(-1.0f, "osgWater.glowComposite");
     osg::StateSet* c = _composite->getOrCreateStateSet();
-    c->setAttribute(createProgram("osgWater.glowAdd", "screen.vert", "glowadd.frag"));
+    c->setAttribute(programs.get("osgWater.glowAdd", "screen.vert", "glowadd.frag"));
     c->setTextureAttribute(UNIT_PASS_INPUT, _blurTex[1].get());
     c->addUniform(new osg::Uniform("osgWater_GlowTex", int(UNIT_PASS_INPUT)));
     c->addUniform(new osg::Uniform("osgWater_GlowIntensity", 1.0f));

@@ -12,6 +12,8 @@
 
 namespace osgWater {
 
+class ProgramLibrary;
+
 //! Glow of the sun's highlight on the water, one view's worth (thesis §9.3, blurred on the GPU
 //! instead of the thesis's CPU): (1) the highlight pow(max(0, R.E), e) x sun colour of the surface
 //! alone, the scene only as depth (occluders), into a target of a fraction of the view's size;
@@ -20,8 +22,8 @@ class OSGWATER_EXPORT GlowPasses : public osg::Referenced
 {
 public:
     //! `scene`: the WaterNode (its children are the occluders); targets are width x height texels.
-    GlowPasses(osg::Group* scene, osg::StateSet* sceneState, osg::StateSet* waterState, int width, int height,
-               bool floatTargets);
+    GlowPasses(osg::Group* scene, osg::StateSet* sceneState, osg::StateSet* waterState, ProgramLibrary& programs,
+               int width, int height, bool floatTargets);
 
     bool matches(int width, int height, bool floatTargets) const
     { return width == _width && height == _height && floatTargets == _float; }

@@ -1,4 +1,5 @@
 #include "passes/UnderwaterView.h"
+#include "shaders/ProgramLibrary.h"
 #include "frame/ScreenTriangle.h"
 #include "shaders/Shaders.h"
 #include "frame/PassTable.h"
@@ -31,12 +32,12 @@ private:
     const UnderwaterView* _owner; // owns the cap, so outlives it
 };
 
-UnderwaterView::UnderwaterView()
+UnderwaterView::UnderwaterView(ProgramLibrary& programs)
 {
     // the cap is the first surface on its rays: drawn after everything else, over it
     _cap = makeScreenTriangle(-1.0f, "osgWater.nearPlaneCap");
     osg::StateSet* cap = _cap->getOrCreateStateSet();
-    cap->setAttribute(createProgram("osgWater.cap", "screen.vert", "cap.frag"));
+    cap->setAttribute(programs.get("osgWater.cap", "screen.vert", "cap.frag"));
     cap->setAttributeAndModes(new osg::Depth(osg::Depth::ALWAYS, 0.0, 1.0, false));
     cap->setMode(GL_CULL_FACE, osg::StateAttribute::OFF);
     setUpPassBin(cap, PASS_CAP);
@@ -47,7 +48,7 @@ UnderwaterView::UnderwaterView()
     // (just inside the far plane: a fragment exactly on it may be clipped)
     _backdrop = makeScreenTriangle(1.0f - 1.0e-5f, "osgWater.underwaterBackdrop");
     osg::StateSet* bd = _backdrop->getOrCreateStateSet();
-    bd->setAttribute(createProgram("osgWater.backdrop", "screen.vert", "backdrop.frag"));
+    bd->setAttribute(programs.get("osgWater.backdrop", "screen.vert", "backdrop.frag"));
     bd->setAttributeAndModes(new osg::Depth(osg::Depth::LEQUAL, 0.0, 1.0, false));
     bd->setMode(GL_CULL_FACE, osg::StateAttribute::OFF);
     setUpPassBin(bd, PASS_BACKDROP);

@@ -9,6 +9,8 @@
 
 namespace osgWater {
 
+class ProgramLibrary;
+
 //! What a view needs beyond its passes when the eye is near or under the surface (thesis §7.5):
 //! - the near-plane cap: where the eye's ray crosses the surface before the near plane (a camera
 //!   on or just off the water), the surface is shaded at the crossing (shaders/cap.frag), so a
@@ -19,7 +21,7 @@ namespace osgWater {
 class OSGWATER_EXPORT UnderwaterView : public osg::Referenced
 {
 public:
-    UnderwaterView();
+    explicit UnderwaterView(ProgramLibrary& programs);
 
     osg::Geode* getCap() const { return _cap.get(); }
     osg::Geode* getBackdrop() const { return _backdrop.get(); }
