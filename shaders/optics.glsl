@@ -1,4 +1,4 @@
-// Optics of the water shader. Mirrored line by line in src/osgWater/optics/Optics.cpp (same names, same
+// Optics of the water shader. Mirrored line by line in osgWater/optics/Optics.cpp (same names, same
 // guards); tests hold both to the same numbers. Robust by construction: refract() returns 0 under
 // total internal reflection (a mask, never normalised), every division is guarded, depth 1.0 is
 // sky (a miss, not a bottom).

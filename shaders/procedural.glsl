@@ -5,7 +5,7 @@
 // the ray refracted back into the air there by the waves' analytic normal; the sky's brightness in
 // that direction from a sun-and-halo map. Calibrated so that flat water gives what the photons give,
 // (1 - F) exp(-k d); aesthetic elsewhere (nothing conserves the light). The CPU mirror:
-// src/osgWater/caustics/ProceduralCaustics.h (the same steps in double precision). Needs waves.glsl and optics.glsl
+// osgWater/caustics/ProceduralCaustics.h (the same steps in double precision). Needs waves.glsl and optics.glsl
 // (owFresnel) first; the includer lists OSGWATER_FRESNEL in its import_defines.
 uniform vec2 osgWater_IOR;               // (air, water)
 uniform float osgWater_PhotonExtinction; // the green channel's sun extinction (the thesis's k)

@@ -2,7 +2,7 @@
 // the refraction pass draws from above the water: each true vertex T under the water moves to
 // where it appears, so the pass draws the underwater scene as the eye sees it through the waves
 // and the water shader reads it at the surface point's own place. Mirrored by
-// src/osgWater/optics/VirtualVertices.h (double precision; SightPoint::Solved).
+// osgWater/optics/VirtualVertices.h (double precision; SightPoint::Solved).
 // The membrane: the waves faceted on a square grid of osgWater_MembraneCell metres, the analytic
 // normal at each grid vertex. Each facet's cell is bounded by the refraction rays through its
 // vertices (eq. 2.2; eq. 3.1 and 3.2 where Snell gives none, so no facet loses its cell). A vertex

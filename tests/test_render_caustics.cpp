@@ -239,7 +239,7 @@ TEST_P(RenderCausticsOnFlatWater, FlatWaterGivesTheTransmittedIrradianceEverywhe
 TEST(RenderCaustics, ProceduralCausticsOverASineWaveAreTheirCpuMirrorsTexelByTexel)
 {
     // one 2 m wave, 3 cm high, over a bed 2 m down; 3 cm texels. Each texel against the CPU
-    // construction at its own bed point (src/osgWater/caustics/ProceduralCaustics.h, double precision): the lines
+    // construction at its own bed point (osgWater/caustics/ProceduralCaustics.h, double precision): the lines
     // must be where the construction puts them, not just as bright on average
     for (const osg::Vec3 sun : { osg::Vec3(0, 0, 1), osg::Vec3(0.5f, 0.2f, 0.85f) }) {
         CausticsScene sc(8.0f, 256, 64, sun, -2.0f);

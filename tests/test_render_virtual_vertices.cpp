@@ -1,7 +1,7 @@
 // Refraction by virtual vertices drawn on the GPU (WaterSettings::VIRTUAL_VERTICES): the refraction
 // pass draws a finely tessellated checkerboard bed where it appears through the water. On flat water
 // the drawn image must be Snell's within half a pixel; over a gentle wave each shown point must lie
-// where the CPU mirror (src/osgWater/optics/VirtualVertices.h, double precision) puts its virtual vertex. The pass
+// where the CPU mirror (osgWater/optics/VirtualVertices.h, double precision) puts its virtual vertex. The pass
 // targets are the view's size, so a texel is a pixel.
 #include "GLHarness.h"
 #include <osgWater/WaterNode>

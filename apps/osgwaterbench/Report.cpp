@@ -288,7 +288,7 @@ bool writeDocs(const std::string& dir, const RunInfo& info, const std::vector<Re
 
     // the presets: speed from the ablation, errors from the techniques
     md << "\n## Quality presets\n\n"
-       << "`WaterSettings::setQuality()`: bundles of the speed settings (see `src/osgWater/settings/QualityPresets.cpp`). "
+       << "`WaterSettings::setQuality()`: bundles of the speed settings (see `osgWater/settings/QualityPresets.cpp`). "
        << "Ratio from the ablation, errors from the techniques' table (every water pixel of every view).\n\n"
        << "| preset | ratio | refr. px median | p99 | refl. texels median | caustics RMSE |\n|---|---|---|---|---|---|\n";
     const std::pair<const char*, const char*> presets[] = { { "fast", "quality-fast" }, { "balanced (default)", "default" },
