@@ -1,5 +1,5 @@
 #version 130
-#pragma import_defines(OSGWATER_FOG, OSGWATER_CAUSTICS, OSGWATER_CAUSTICS_CHANNELS, OSGWATER_CAUSTICS_TILED, OSGWATER_CAUSTICS_PROCEDURAL, OSGWATER_PROCEDURAL_SHADE, OSGWATER_FRESNEL, OSGWATER_REFLECTED_CAUSTICS, OSGWATER_TRUE_POSITIONS)
+#pragma import_defines(OSGWATER_DISPLAY, OSGWATER_FOG, OSGWATER_CAUSTICS, OSGWATER_CAUSTICS_CHANNELS, OSGWATER_CAUSTICS_TILED, OSGWATER_CAUSTICS_PROCEDURAL, OSGWATER_PROCEDURAL_SHADE, OSGWATER_FRESNEL, OSGWATER_REFLECTED_CAUSTICS, OSGWATER_TRUE_POSITIONS)
 // Fixed-function look of the OBJ loader's geometry: material * texture, one sun + ambient, lit per
 // vertex (scene.vert). Variants by pass, never branches (a software rasteriser runs both sides):
 // - OSGWATER_CAUSTICS, where the pass can see below the water and caustics are on: under water the
@@ -12,7 +12,11 @@
 // - OSGWATER_FOG, where the pass's eye is under water: everything is seen through water, its
 //   colour blended towards the water colour by the distance from this pass's eye (eq. 10);
 // - OSGWATER_TRUE_POSITIONS, the refraction pass drawing virtual vertices for the debug output:
-//   the fragment's true place in the water's local frame (a float target), alpha 1.
+//   the fragment's true place in the water's local frame (a float target), alpha 1;
+// - OSGWATER_DISPLAY, the view itself: the linear light is encoded for display (srgb.glsl); every
+//   other pass (reflection, refraction, environment) keeps it linear for the water to sum.
+// The texture's texels are sRGB display values, decoded after filtering.
+#pragma include "srgb.glsl"
 uniform sampler2D osgWater_BaseTexture; // a white texel when the geometry has none
 
 in vec2 vTexCoord;
@@ -55,13 +59,15 @@ void main()
     float ndlR = gl_FrontFacing ? vNdlR.x : vNdlR.y;
     c += vSunLit * (ndlR * owReflectedSun(ndlR));
 #endif
-    c *= tex.rgb;
+    c *= owDecodeSrgb(tex.rgb);
 #ifdef OSGWATER_FOG
     vec3 a = exp(-osgWater_FogExtinction * (length(vEyePos) * osgWater_EyeUnit)); // eq. 4 with d = |A - C|, per channel
     c = osgWater_FogColor + a * (c - osgWater_FogColor);     // eq. 10
 #endif
 #ifdef OSGWATER_TRUE_POSITIONS
     gl_FragColor = vec4(vTrueLocal, 1.0);
+#elif defined(OSGWATER_DISPLAY)
+    gl_FragColor = vec4(owDisplay(c), vUnlit.a * tex.a);
 #else
     gl_FragColor = vec4(c, vUnlit.a * tex.a);
 #endif

@@ -2,6 +2,8 @@
 #pragma import_defines(OSGWATER_FOG, OSGWATER_CAUSTICS, OSGWATER_CAUSTICS_TILED, OSGWATER_REFLECTED_CAUSTICS, OSGWATER_CAUSTICS_PROCEDURAL, OSGWATER_VIRTUAL_VERTICES, OSGWATER_TRUE_POSITIONS)
 // The kit's program for the water's scene (the WaterNode's children): textured, lit by one sun,
 // and clipped by the pass plane so the reflection and refraction passes split the scene.
+// The material's colours are sRGB display values (as OBJ/MTL files write them), decoded here: the
+// lighting is summed in linear light (srgb.glsl).
 // Lit per vertex like the fixed-function pipeline the OBJ loader's materials are made for: with
 // the water out of view this program must cost what fixed function costs, and a software
 // rasteriser pays for every fragment instruction. Both faces are lit (the fragment picks one).
@@ -9,6 +11,7 @@
 // each vertex is drawn at its virtual vertex, where it appears through the waves; everything else
 // (lighting, caustics, clipping) follows its true place. OSGWATER_TRUE_POSITIONS with it: the
 // fragment writes its true place (local frame) instead of a colour, for the debug output.
+#pragma include "srgb.glsl"
 uniform vec4 osgWater_ClipPlane;  // eye space; only active where GL_CLIP_DISTANCE0 is enabled
 uniform vec3 osgWater_SunEye;     // towards the sun, in this pass's eye space
 uniform vec3 osgWater_SunColor;
@@ -59,9 +62,9 @@ void main()
     float l2 = dot(n, n);
     float ndl = l2 > 1e-20 ? dot(n, osgWater_SunEye) * inversesqrt(l2) : 1.0; // no normal: lit fully
     vNdl = vec2(max(ndl, 0.0), l2 > 1e-20 ? max(-ndl, 0.0) : 1.0);
-    vUnlit = vec4(gl_FrontMaterial.emission.rgb + gl_FrontMaterial.ambient.rgb * osgWater_Ambient,
+    vUnlit = vec4(owDecodeSrgb(gl_FrontMaterial.emission.rgb) + owDecodeSrgb(gl_FrontMaterial.ambient.rgb) * osgWater_Ambient,
                   gl_FrontMaterial.diffuse.a);
-    vSunLit = gl_FrontMaterial.diffuse.rgb * osgWater_SunColor;
+    vSunLit = owDecodeSrgb(gl_FrontMaterial.diffuse.rgb) * osgWater_SunColor;
     vTexCoord = (gl_TextureMatrix[0] * gl_MultiTexCoord0).st;
 #if defined(OSGWATER_CAUSTICS) || defined(OSGWATER_REFLECTED_CAUSTICS)
     vAboveWater = dot(osgWater_WaterPlane, eye);

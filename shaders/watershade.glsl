@@ -11,6 +11,7 @@
 #pragma import_defines(OSGWATER_GRID, OSGWATER_EYE_BELOW, OSGWATER_REFRACTION, OSGWATER_REFLECTION, OSGWATER_FRESNEL, OSGWATER_UNDERWATER, OSGWATER_NO_REFLECTION, OSGWATER_NO_REFRACTION, OSGWATER_SEARCH_STEPS, OSGWATER_ENVIRONMENT, OSGWATER_DEBUG)
 #pragma include "contract.glsl"
 #pragma include "optics.glsl"
+#pragma include "srgb.glsl"
 
 uniform sampler2D osgWater_ReflectionTex;
 uniform sampler2D osgWater_RefractionTex;
@@ -276,7 +277,8 @@ vec3 owShadeWater(vec3 U, vec3 Nup, vec3 E, out vec4 debugOut)
 }
 
 // What a fragment of the water writes at U (on the surface; `drawn`: the rasterised point it was
-// found from): its colour, or the debug output (OSGWATER_DEBUG 4: the analytic surface under U;
+// found from): its colour (linear light, encoded for display: the water is drawn in the view
+// itself), or the debug output (OSGWATER_DEBUG 4: the analytic surface under U;
 // 5: the drawn point; else what owShadeWater reported), the same for the surface and the cap.
 vec4 owWaterFragment(vec3 U, vec3 drawn, vec3 color, vec4 debugHit)
 {
@@ -291,6 +293,6 @@ vec4 owWaterFragment(vec3 U, vec3 drawn, vec3 color, vec4 debugHit)
 #elif defined(OSGWATER_DEBUG)
     return debugHit;
 #else
-    return vec4(color, 1.0);
+    return vec4(owDisplay(color), 1.0);
 #endif
 }

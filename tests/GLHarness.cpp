@@ -1,6 +1,7 @@
 #include "GLHarness.h"
 #include <osgWater/WaterTypes>
 #include "optics/Optics.h"
+#include "optics/Srgb.h"
 #include <algorithm>
 #include "../apps/common/FrameTimer.h"
 #include <osg/Material>
@@ -275,13 +276,16 @@ osgWater::Wave makeWave(float dx, float dy, float wavelength, float amplitude)
 MirrorComparison compareFlatWaterWithOptics(Harness& h, const osg::Image* img, const osgWater::WaterSettings& s,
                                             const osg::Matrixd& toWater, double level, double bedZ,
                                             const osg::Vec3& bed, int step,
-                                            const std::function<bool(const osg::Vec3d&)>& keep)
+                                            const std::function<bool(const osg::Vec3d&)>& keep,
+                                            const ReflectedColour& reflected)
 {
     namespace optics = osgWater::optics;
     MirrorComparison r;
     const osg::Matrixd inv = osg::Matrixd::inverse(h.camera()->getViewMatrix() * h.camera()->getProjectionMatrix());
     const osg::Vec4 clear = h.camera()->getClearColor();
-    const glm::vec3 sky(clear.r(), clear.g(), clear.b()), bedColour(bed.x(), bed.y(), bed.z());
+    // the sky (the clear colour) and the bed are display values; the water sums linear light
+    const glm::vec3 sky = optics::decodeSrgb(glm::vec3(clear.r(), clear.g(), clear.b()));
+    const glm::vec3 bedColour = optics::decodeSrgb(glm::vec3(bed.x(), bed.y(), bed.z()));
     const osg::Vec3 body = s.getBodyColor(), k = s.getViewExtinction();
     for (int y = step / 2; y < h.height(); y += step)
         for (int x = step / 2; x < h.width(); x += step) {
@@ -300,9 +304,20 @@ MirrorComparison compareFlatWaterWithOptics(Harness& h, const osg::Image* img, c
                                                      optics::attenuation(glm::vec3(k.x(), k.y(), k.z()), glm::length(X - u)));
             const float F = optics::fresnelModel(int(s.getFresnelModel()), -I.z, s.getAirIOR(), s.getWaterIOR(),
                                                  s.getFresnelModelExponent());
-            const glm::vec3 expect = optics::fresnelMix(refr, sky, F);
+            glm::vec3 seen = sky;
+            if (reflected) {
+                const osg::Vec3 c = reflected(U, osg::Vec3d(d.x(), d.y(), -d.z()));
+                seen = optics::decodeSrgb(glm::vec3(c.x(), c.y(), c.z()));
+            }
+            const glm::vec3 expect = optics::encodeSrgb(optics::fresnelMix(refr, seen, F));
             const float* c = pixel(img, x, y);
-            for (int i = 0; i < 3; ++i) r.worst = std::max(r.worst, double(std::fabs(c[i] - expect[i])));
+            for (int i = 0; i < 3; ++i)
+                if (double(std::fabs(c[i] - expect[i])) > r.worst) {
+                    r.worst = std::fabs(c[i] - expect[i]);
+                    r.worstPixel.set(x, y);
+                }
+            r.renderedLevels.insert(int(std::lround(c[1] * 255.0f)));
+            r.expectedLevels.insert(int(std::lround(expect[1] * 255.0f)));
             ++r.checked;
         }
     return r;

@@ -10,6 +10,7 @@
 #include <osgWater/WaterSurface>
 #include <osgWater/WaterNode>
 #include <functional>
+#include <set>
 #include <cstdlib>
 #include <ostream>
 #include <string>
@@ -130,15 +131,21 @@ osg::ref_ptr<osgWater::WaterNode> flatWaterOverBed(float depth);
 //! of colour `bed` at `bedZ`, with the clear colour (the sky) reflected: each `step`-th pixel whose
 //! ray, taken into the water's frame by `toWater`, meets the surface at a U that `keep` accepts is
 //! compared with eq. 9 of eq. 5 along the exact refracted path (the settings' Fresnel model and water
-//! model per channel, the path in the water's metres). Rays within 0.05 of level are left out.
+//! model per channel, the path in the water's metres), in linear light: the bed and the sky decoded
+//! from sRGB, the mix encoded. Rays within 0.05 of level are left out. What the reflected ray sees is
+//! the clear colour, or what `reflected` says (a display value) for the ray leaving U along Rr.
 struct MirrorComparison {
     int checked = 0;      //!< pixels compared
     double worst = 0.0;   //!< largest channel difference
+    osg::Vec2i worstPixel; //!< where it is (column, row from the bottom)
     bool bedMissed = false; //!< a refracted ray that never reached the bed (a bad test scene)
+    std::set<int> renderedLevels, expectedLevels; //!< the 8-bit levels of green the pixels show, and should
 };
+using ReflectedColour = std::function<osg::Vec3(const osg::Vec3d& U, const osg::Vec3d& Rr)>;
 MirrorComparison compareFlatWaterWithOptics(Harness& h, const osg::Image* img, const osgWater::WaterSettings& s,
                                             const osg::Matrixd& toWater, double level, double bedZ,
                                             const osg::Vec3& bed, int step,
-                                            const std::function<bool(const osg::Vec3d&)>& keep = nullptr);
+                                            const std::function<bool(const osg::Vec3d&)>& keep = nullptr,
+                                            const ReflectedColour& reflected = nullptr);
 
 }

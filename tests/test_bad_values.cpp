@@ -67,6 +67,7 @@ std::vector<FloatSetting> floatSettings()
         SETTING("glowRadius", setGlowRadius, getGlowRadius, 0.0f, 32.0f),
         SETTING("glowResolution", setGlowResolution, getGlowResolution, 1.0f / 64.0f, 1.0f),
         SETTING("glowExponent", setGlowExponent, getGlowExponent, 1.0f, 10000.0f),
+        SETTING("exposure", setExposure, getExposure, 0.0f, 1000.0f),
         SETTING("fovExtensionNear", setFovExtensionNear, getFovExtensionNear, 1.0f, 4.0f),
         SETTING("fovExtensionFar", setFovExtensionFar, getFovExtensionFar, 1.0f, 4.0f),
         SETTING("fovExtensionFalloff", setFovExtensionFalloff, getFovExtensionFalloff, 0.01f, 1.0e5f),

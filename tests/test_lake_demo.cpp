@@ -2,6 +2,7 @@
 // be there if the water works: trees mirrored below the shoreline, the bed visible through shallow
 // water and not through deep water. Each effect is switched off once to show the check depends on it.
 #include "node/WaterNodeImpl.h"
+#include "optics/Srgb.h"
 #include "GLHarness.h"
 #include "../apps/common/Floaters.h"
 #include "../apps/common/Pond.h"
@@ -194,7 +195,9 @@ TEST(LakeDemo, UnderwaterViewIsFiniteAndFadesWithDistance)
     osg::ref_ptr<osg::Image> img = h.readColor();
     ASSERT_TRUE(img.valid());
     EXPECT_TRUE(testing_gl::allFinite(img.get()));
-    const osg::Vec3 water(0.0f, 0.2f, 0.1f); // the lake's water colour (its .osgt keeps the default)
+    // the lake's water colour (its .osgt keeps the default), linear light, as the view shows it
+    const glm::vec3 body = osgWater::optics::encodeSrgb(glm::vec3(0.0f, 0.2f, 0.1f));
+    const osg::Vec3 water(body.x, body.y, body.z);
     auto distanceToWater = [&](const osg::Vec3d& p) {
         const osg::Vec4d c = osg::Vec4d(p, 1.0) * h.camera()->getViewMatrix() * h.camera()->getProjectionMatrix();
         const int x = int((c.x() / c.w() * 0.5 + 0.5) * h.width()), y = int((c.y() / c.w() * 0.5 + 0.5) * h.height());

@@ -1,5 +1,6 @@
 // Optics (the CPU mirror of shaders/optics.glsl) against closed forms and hard cases.
 #include "optics/Optics.h"
+#include "optics/Srgb.h"
 #include <osgWater/WaterSettings>
 #include <glm/gtc/matrix_transform.hpp>
 #include <algorithm>
@@ -78,6 +79,30 @@ TEST(Optics, AttenuationAndMixFollowEquations4to9)
     EXPECT_NEAR(t.y, 0.2f + 0.25f * 0.6f, 1e-6f);
     const glm::vec3 c = fresnelMix(t, sky, 0.4f);
     EXPECT_NEAR(c.z, t.z + 0.4f * (sky.z - t.z), 1e-6f);
+}
+
+// The sRGB curve (IEC 61966-2-1) at values worked out by hand from its definition: mid-grey 128/255
+// is 0.21586 of white, 0.18 of white shows as 0.46136, the knee joins both pieces; every 8-bit
+// level survives decoding and encoding again, and nothing outside [0, 1] (a NaN neither) leaves it
+TEST(Optics, SrgbCurveMatchesTheStandardAndRoundTripsEveryLevel)
+{
+    EXPECT_NEAR(decodeSrgb(128.0f / 255.0f), 0.2158605f, 2e-6f);
+    EXPECT_NEAR(encodeSrgb(0.18f), 0.4613561f, 2e-6f);
+    EXPECT_NEAR(decodeSrgb(0.5f), 0.2140411f, 2e-6f);
+    EXPECT_NEAR(decodeSrgb(0.04045f), 0.04045f / 12.92f, 1e-6f); // the pieces meet at the knee
+    EXPECT_NEAR(encodeSrgb(0.0031308f), 0.04045f, 1e-5f);
+    EXPECT_EQ(decodeSrgb(0.0f), 0.0f);
+    EXPECT_EQ(decodeSrgb(1.0f), 1.0f);
+    EXPECT_NEAR(encodeSrgb(1.0f), 1.0f, 1e-6f);
+    for (int i = 0; i < 256; ++i)
+        EXPECT_EQ(int(std::lround(encodeSrgb(decodeSrgb(i / 255.0f)) * 255.0f)), i) << i;
+    EXPECT_EQ(decodeSrgb(-1.0f), 0.0f);
+    EXPECT_EQ(encodeSrgb(2.0f), encodeSrgb(1.0f));
+    EXPECT_EQ(encodeSrgb(NAN), 0.0f);
+    EXPECT_EQ(decodeSrgb(NAN), 0.0f);
+    const glm::vec3 shown = display(glm::vec3(0.09f, 0.18f, 0.5f), 2.0f);
+    EXPECT_NEAR(shown.y, encodeSrgb(0.36f), 1e-6f);
+    EXPECT_NEAR(shown.z, 1.0f, 1e-6f); // exposed past white: white
 }
 
 TEST(Optics, LineIntersectionAndNearParallelLines)

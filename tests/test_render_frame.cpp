@@ -5,6 +5,7 @@
 #include "GLHarness.h"
 #include <osgWater/WaterNode>
 #include "frame/PassMath.h"
+#include "optics/Srgb.h"
 #include <cmath>
 #include <iostream>
 
@@ -13,13 +14,21 @@ using namespace osgWater;
 
 namespace {
 
-// the kit's default material: diffuse 0.8, ambient 0.2, lit by the settings' sun and ambient colours
-const float kMaterialAmbient = 0.2f, kMaterialDiffuse = 0.8f;
+// the kit's default material: diffuse 0.8, ambient 0.2 (display values, as a file's), lit by the
+// settings' sun and ambient colours (linear light)
+const float kMaterialAmbient = optics::decodeSrgb(0.2f), kMaterialDiffuse = optics::decodeSrgb(0.8f);
 
-// ambient + diffuse x N.L x the share of the sun that reaches the point
+// ambient + diffuse x N.L x the share of the sun that reaches the point, in linear light
 osg::Vec3 lambert(const WaterSettings& s, float ndl, float sunShare)
 {
     return s.getAmbientColor() * kMaterialAmbient + s.getSunColor() * (kMaterialDiffuse * ndl * sunShare);
+}
+
+// linear light as the view shows it (exposure 1)
+osg::Vec3 shown(const osg::Vec3& linear)
+{
+    const glm::vec3 e = optics::encodeSrgb(glm::vec3(linear.x(), linear.y(), linear.z()));
+    return osg::Vec3(e.x, e.y, e.z);
 }
 
 osg::Vec3 colourAt(Harness& h, const osg::Image* img, const osg::Vec3d& p)
@@ -72,7 +81,7 @@ TEST(RenderFrame, ChildrenAreLitTheSameWithTheWaterInViewAndOutOfView)
     water->addChild(checkerPlane(-3.0f, 60.0f, 1.0f));
     h.setScene(water.get());
     const osg::Vec3d eye(0, 0, 10), wall(0, 10, 11);
-    const osg::Vec3 expected = lambert(*water->getSettings(), 0.5f, 1.0f);
+    const osg::Vec3 expected = shown(lambert(*water->getSettings(), 0.5f, 1.0f));
 
     h.lookAt(eye, osg::Vec3d(0, 10, 15), 45.0); // up: the water below the frustum
     h.frame(1.0);
@@ -126,7 +135,7 @@ TEST(RenderFrame, UnderWaterChildrenAreLitTheSameWithTheSurfaceInViewAndOutOfVie
     // the way: most of exp(-k 8 / cos 22) is expected, far more than ambient alone
     const float fogged = float(std::exp(-0.1 * (shelf - eye).length()));
     const float sunPath = float(std::exp(-0.1 * 8.0 / std::cos(std::asin(0.5 / 1.333))));
-    EXPECT_GT(narrow.x(), fogged * lambert(*water->getSettings(), std::sqrt(0.75f), 0.75f * sunPath).x())
+    EXPECT_GT(narrow.x(), shown(lambert(*water->getSettings(), std::sqrt(0.75f), 0.75f * sunPath) * fogged).x())
         << "the shelf under water should get the sun through the surface";
 }
 
@@ -169,12 +178,13 @@ TEST(RenderFrame, UnderWaterTheBedSeenByTotalReflectionCarriesTheCausticsAndShad
     std::cout << "bed lit: view " << litView.x() << ", mirrored " << litMirror.x() << "; in the shadow: view "
               << shadowView.x() << ", mirrored " << shadowMirror.x() << std::endl;
     // the view's own bed: caustics (about 1 - F(0) = 0.98 of the sun) and the slab's shadow
-    EXPECT_NEAR(shadowView.x(), lambert(*s, 1.0f, 0.0f).x(), 2.0 / 255.0);
-    EXPECT_GT(litView.x(), lambert(*s, 1.0f, 0.9f).x());
-    EXPECT_LT(litView.x(), lambert(*s, 1.0f, 0.999f).x()) << "the caustic irradiance is below the full sun";
-    // the mirrored bed, in an 8-bit target: the same within its quantisation and a texel
-    EXPECT_LE(maxDifference(shadowMirror, shadowView), 3.0f / 255.0f) << "the mirrored bed lost the underwater shadow";
-    EXPECT_LE(maxDifference(litMirror, litView), 3.0f / 255.0f) << "the mirrored bed lost the caustics";
+    EXPECT_NEAR(shadowView.x(), shown(lambert(*s, 1.0f, 0.0f)).x(), 2.0 / 255.0);
+    EXPECT_GT(litView.x(), shown(lambert(*s, 1.0f, 0.9f)).x());
+    EXPECT_LT(litView.x(), shown(lambert(*s, 1.0f, 0.999f)).x()) << "the caustic irradiance is below the full sun";
+    // the mirrored bed, in linear light in its pass target: as the view shows it, once encoded,
+    // within a texel
+    EXPECT_LE(maxDifference(shown(shadowMirror), shadowView), 3.0f / 255.0f) << "the mirrored bed lost the underwater shadow";
+    EXPECT_LE(maxDifference(shown(litMirror), litView), 3.0f / 255.0f) << "the mirrored bed lost the caustics";
 }
 
 TEST(RenderFrame, ReleasingTheNodeGivesBackEveryGLObjectItMade)

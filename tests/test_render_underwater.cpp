@@ -5,6 +5,7 @@
 #include "GLHarness.h"
 #include <osgWater/WaterNode>
 #include "optics/Optics.h"
+#include "optics/Srgb.h"
 #include <osgWater/WaterTypes>
 #include <cmath>
 #include <algorithm>
@@ -33,12 +34,20 @@ osg::Vec3 at(const osg::Image* img, const osg::Vec2d& p)
     return osg::Vec3(v[0], v[1], v[2]);
 }
 
-// eq. 10 per channel: the Optics mirror's attenuation and tint
+// eq. 10 per channel in linear light: the Optics mirror's attenuation and tint of an object's
+// display colour c (decoded) towards the water's body colour w (linear)
 osg::Vec3 fog(const osg::Vec3& c, const osg::Vec3& w, const osg::Vec3& k, double d)
 {
-    const glm::vec3 t = optics::waterTint(glm::vec3(c.x(), c.y(), c.z()), glm::vec3(w.x(), w.y(), w.z()),
+    const glm::vec3 t = optics::waterTint(optics::decodeSrgb(glm::vec3(c.x(), c.y(), c.z())), glm::vec3(w.x(), w.y(), w.z()),
                                           optics::attenuation(glm::vec3(k.x(), k.y(), k.z()), float(d)));
     return osg::Vec3(t.x, t.y, t.z);
+}
+
+// linear light as the view shows it (exposure 1)
+osg::Vec3 shown(const osg::Vec3& linear)
+{
+    const glm::vec3 e = optics::encodeSrgb(glm::vec3(linear.x(), linear.y(), linear.z()));
+    return osg::Vec3(e.x, e.y, e.z);
 }
 
 }
@@ -71,17 +80,18 @@ TEST_P(RenderUnderwaterFog, ObjectsFadeToTheWaterColourWithDistanceFromTheEye)
     const osg::Vec3 W = s.getBodyColor();
     const osg::Vec3d nearP(-0.9, 3, -3), farP(3.6, 12, -3);
     const osg::Vec3 nearC = at(img.get(), h.pixelOf(nearP)), farC = at(img.get(), h.pixelOf(farP));
-    const osg::Vec3 nearE = fog(osg::Vec3(1, 0, 0), W, s.getViewExtinction(), (nearP - eye).length());
-    const osg::Vec3 farE = fog(osg::Vec3(1, 0, 0), W, s.getViewExtinction(), (farP - eye).length());
+    const osg::Vec3 nearE = shown(fog(osg::Vec3(1, 0, 0), W, s.getViewExtinction(), (nearP - eye).length()));
+    const osg::Vec3 farE = shown(fog(osg::Vec3(1, 0, 0), W, s.getViewExtinction(), (farP - eye).length()));
     for (int i = 0; i < 3; ++i) {
         EXPECT_NEAR(nearC[i], nearE[i], 0.01) << "near, channel " << i;
         EXPECT_NEAR(farC[i], farE[i], 0.01) << "far, channel " << i;
     }
-    if ((nearE - W).length() > 0.05f) // monotonic in distance (a murky water hides both quads alike)
-        EXPECT_LT((farC - W).length(), (nearC - W).length());
+    const osg::Vec3 waterShown = shown(W);
+    if ((nearE - waterShown).length() > 0.05f) // monotonic in distance (a murky water hides both quads alike)
+        EXPECT_LT((farC - waterShown).length(), (nearC - waterShown).length());
     // a ray that meets nothing under water ends in water: the backdrop, not the clear colour
     const osg::Vec3 nothing = at(img.get(), h.pixelOf(osg::Vec3d(0, 40, -20)));
-    EXPECT_NEAR((nothing - W).length(), 0.0f, 0.01f);
+    EXPECT_NEAR((nothing - waterShown).length(), 0.0f, 0.01f);
 }
 
 INSTANTIATE_TEST_SUITE_P(Models, RenderUnderwaterFog, waterModels(), waterModelTestName);
@@ -161,7 +171,7 @@ TEST(RenderUnderwater, BeyondTheCriticalAngleTheSurfaceMirrorsTheWaterWithinItSh
     // 60 degrees > 48.6: total internal reflection, F = 1: the red floor, through the water path
     // eye -> surface -> floor (2 / cos 60 + 6 / cos 60 = 16 m). The reflection lookup's point on the
     // floor is approximate (W = U + m R), so allow +-4 m of path: +-0.03 in the red channel.
-    const osg::Vec3 beyondE = fog(red, W, k, 16.0);
+    const osg::Vec3 beyondE = shown(fog(red, W, k, 16.0));
     EXPECT_NEAR(phys.beyond.x(), beyondE.x(), 0.03);
     EXPECT_NEAR(phys.beyond.z(), beyondE.z(), 0.03);
     EXPECT_GT(phys.beyond.x(), phys.beyond.z()) << "beyond the critical angle: the floor, not the sky";
@@ -170,7 +180,7 @@ TEST(RenderUnderwater, BeyondTheCriticalAngleTheSurfaceMirrorsTheWaterWithinItSh
     const double t = osg::DegreesToRadians(30.0);
     const float F = optics::fresnelExact(float(std::cos(t)), 1.333f, 1.0f);
     const osg::Vec3 refr = fog(sky, W, k, 2.0 / std::cos(t));
-    const osg::Vec3 withinE = refr + (fog(red, W, k, 8.0 / std::cos(t)) - refr) * F;
+    const osg::Vec3 withinE = shown(refr + (fog(red, W, k, 8.0 / std::cos(t)) - refr) * F);
     for (int i = 0; i < 3; ++i) EXPECT_NEAR(phys.within[i], withinE[i], 0.03) << "channel " << i;
     EXPECT_GT(phys.within.z(), phys.within.x()) << "within the Snell window: the sky";
 

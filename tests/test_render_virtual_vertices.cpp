@@ -6,6 +6,7 @@
 #include "GLHarness.h"
 #include <osgWater/WaterNode>
 #include "optics/VirtualVertices.h"
+#include "optics/Srgb.h"
 #include <algorithm>
 #include <cmath>
 #include <vector>
@@ -154,11 +155,11 @@ TEST(RenderVirtualVertices, OnFlatWaterTheCheckerboardIsDrawnWithinHalfAPixelOfS
                 nearEdge = nearEdge || !sc.flatHit(x + 0.5 + o.x(), y + 0.5 + o.y(), Y) || checkerAt(Y.x(), Y.y(), kCell) != 1.0f;
             if (nearEdge) continue;
             const osg::Vec3d d = sc.ray(x + 0.5, y + 0.5), U = sc.eye + d * (-sc.eye.z() / d.z());
-            const double expected = water + std::exp(-k * (X - U).length()) * (1.0 - water);
+            const double expected = optics::encodeSrgb(float(water + std::exp(-k * (X - U).length()) * (1.0 - water)));
             fadeErr.push_back(std::fabs(pixel(img.get(), x, y)[1] - expected));
         }
     ASSERT_GT(fadeErr.size(), 2000u);
-    // tolerance: 0.01, beyond the 8-bit pass target's 0.004 step
+    // tolerance: 0.01 (the fade in linear light, encoded), beyond the 8-bit view's 0.004 step
     EXPECT_LT(quantile(fadeErr, 0.99), 0.01) << "the path under water the virtual vertices imply";
 }
 

@@ -62,6 +62,7 @@ osg::ref_ptr<WaterNode> pond()
     s->setUnderwaterModel(WaterSettings::UNDERWATER_THESIS);
     s->setGlowEnabled(false);
     s->setGlowRadius(5.0f);
+    s->setExposure(1.5f);
     WaterSurface* f = w->getSurface();
     f->setLevel(1.5);
     f->setSize(60.0f);
@@ -126,6 +127,7 @@ TEST(Serialization, ExpectedTextReadsBackIntoTheSameNode)
     EXPECT_FALSE(s->getGlowEnabled());
     EXPECT_FLOAT_EQ(s->getGlowRadius(), 5.0f);
     EXPECT_FLOAT_EQ(s->getGlowResolution(), 0.25f); // absent: default
+    EXPECT_FLOAT_EQ(s->getExposure(), 1.5f);
     const WaterSurface* f = w->getSurface();
     EXPECT_DOUBLE_EQ(f->getLevel(), 1.5);
     EXPECT_FLOAT_EQ(f->getSize(), 60.0f);

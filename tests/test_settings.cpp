@@ -27,6 +27,7 @@ TEST(Settings, DefaultsAreThesisTable1)
     EXPECT_TRUE(s->getCausticsFiltering());                         // "with enabled filtering"
     EXPECT_TRUE(s->getCausticsFocused());                           // the passes cover only the lit water
     EXPECT_FLOAT_EQ(s->getGlowExponent(), 200.0f);                  // thesis §9.3 pow(R.E, 200)
+    EXPECT_FLOAT_EQ(s->getExposure(), 1.0f);                        // linear light 1 shows as white
     EXPECT_FLOAT_EQ(s->getGlowRadius(), 3.0f);                      // thesis's 7x7 filter
     EXPECT_FLOAT_EQ(s->getGlowResolution(), 0.25f);                 // 1/4 per axis
     EXPECT_FLOAT_EQ(s->getUnderwaterLookupScale(), 1.5f);           // m of eq. 13

@@ -23,7 +23,9 @@ PassCamera::PassCamera(osg::Group* scene, std::initializer_list<osg::StateSet*> 
 
 void PassCamera::attachColorTexture()
 {
-    _color = makeTargetTexture(_width, _height, GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE, true);
+    // linear light: 8 bits would band in the darks, where the eye sees the steps (half floats keep
+    // every display level of a smooth gradient)
+    _color = makeTargetTexture(_width, _height, GL_RGBA16F_ARB, GL_RGBA, GL_FLOAT, true);
     _color->setName("osgWater.passColor");
     attach(osg::Camera::COLOR_BUFFER, _color.get());
 }
@@ -99,6 +101,7 @@ void PassCamera::applyLighting(const SceneLighting& lighting)
 {
     SceneLighting l = lighting;
     l.clip = true;
+    l.display = false; // a target the water reads: linear light
     l.keepPlane = _keepPlane;
     applySceneLighting(getOrCreateStateSet(), l, getViewMatrix());
 }

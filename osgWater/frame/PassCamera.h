@@ -49,7 +49,7 @@ struct OSGWATER_EXPORT PassContext {
     bool eyeBelow = false;
     bool truePositions = false;   //!< the debug output shows the refracted ray's point: a refraction pass
                                   //!< drawing virtual vertices writes their true places (a float target)
-    osg::Vec4 clearColor;
+    osg::Vec4 clearColor;         //!< the view's background as linear light (the view's own is a display value)
     const WaterSettings* settings = nullptr;
 };
 

@@ -31,6 +31,9 @@ void osgWater::applySceneLighting(osg::StateSet* ss, const SceneLighting& l, con
     // variants, not branches: a pass without water between its eye and the scene (every pass with
     // the eye above the water) compiles no fog at all (a software rasteriser runs both sides of a branch)
     setDefineIf(ss, "OSGWATER_FOG", l.fogExtinction != osg::Vec3());
+    // a pass's target holds linear light; switched off, not removed: the passes of a water inside
+    // another water's scene are culled under that view's own lighting, and would inherit its define
+    ss->setDefine("OSGWATER_DISPLAY", l.display ? osg::StateAttribute::ON : osg::StateAttribute::OFF);
     setOrAddUniform(ss, "osgWater_WaterPlane", osg::Vec4f(planeToEye(osg::Vec4d(0.0, 0.0, 1.0, -l.level), view)));
 
     if (l.clip) {

@@ -47,6 +47,8 @@ struct OSGWATER_EXPORT SceneLighting {
     //! localToSun mirrors a fragment in the water plane first), or null.
     const CausticsLighting* reflectedCaustics = nullptr;
     bool clip = false;           //!< clip to keepPlane (gl_ClipDistance[0]); the view itself does not clip
+    bool display = false;        //!< the view itself: its colour is encoded for display (OSGWATER_DISPLAY);
+                                 //!< a pass's target holds linear light
     osg::Plane keepPlane;        //!< a x + b y + c z + d >= 0 is kept
 };
 

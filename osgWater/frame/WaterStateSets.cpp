@@ -46,6 +46,7 @@ WaterStateSets::WaterStateSets() : _programs(new ProgramLibrary)
     _scene->setAttribute(m.get());
     _scene->addUniform(new osg::Uniform("osgWater_SunColor", osg::Vec3f(1.0f, 1.0f, 1.0f)));
     _scene->addUniform(new osg::Uniform("osgWater_Ambient", osg::Vec3f(0.3f, 0.3f, 0.3f)));
+    _scene->addUniform(new osg::Uniform("osgWater_Exposure", 1.0f)); // linear light times this, then encoded
     // the sun, fog, caustics and clip plane come from each pass's SceneLighting
     _scene->addUniform(new osg::Uniform("osgWater_CausticsTex", int(UNIT_CAUSTICS)));
     _scene->addUniform(new osg::Uniform("osgWater_SunDepth", int(UNIT_SUN_DEPTH)));
@@ -86,6 +87,7 @@ WaterStateSets::WaterStateSets() : _programs(new ProgramLibrary)
     _scene->addUniform(new osg::Uniform("osgWater_MembraneCell", 1.0f));
     _water->addUniform(new osg::Uniform("osgWater_LookupPlanes", osg::Vec2f(1.0f, 1.0f)));
     _water->addUniform(new osg::Uniform("osgWater_WaterColor", osg::Vec3f()));
+    _water->addUniform(_scene->getUniform("osgWater_Exposure"));
     _water->addUniform(new osg::Uniform("osgWater_SurfaceSquare", osg::Vec4f()));
     _water->addUniform(new osg::Uniform("osgWater_Extinction", osg::Vec3f()));
 
@@ -102,6 +104,7 @@ void WaterStateSets::applySettings(const WaterSettings& s, const WaterSurface& s
 {
     _scene->getUniform("osgWater_SunColor")->set(s.getSunColor());
     _scene->getUniform("osgWater_Ambient")->set(s.getAmbientColor());
+    _scene->getUniform("osgWater_Exposure")->set(s.getExposure()); // the water's program shares it
     _scene->getUniform("osgWater_MembraneCell")->set(float(virtualvertices::membraneCellSize(surface)));
 
     osg::StateSet* w = _water.get();

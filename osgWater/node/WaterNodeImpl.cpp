@@ -1,6 +1,7 @@
 #include "node/WaterNodeImpl.h"
 #include "frame/PassMath.h"
 #include "frame/DrawNodes.h"
+#include "optics/Srgb.h"
 #include <osgUtil/CullVisitor>
 #include <osgUtil/IntersectionVisitor>
 #include <osgUtil/LineSegmentIntersector>
@@ -324,7 +325,9 @@ WaterNodeImpl::ViewFrame WaterNodeImpl::gatherFacts(osgUtil::CullVisitor& cv)
     ctx.scene = _node.osg::Group::computeBound();
     ctx.level = _surface->getLevel();
     ctx.clearance = clearance();
-    ctx.clearColor = camera->getClearColor();
+    const osg::Vec4 background = camera->getClearColor(); // a display value; the passes hold linear light
+    const glm::vec3 linear = optics::decodeSrgb(glm::vec3(background.r(), background.g(), background.b()));
+    ctx.clearColor.set(linear.x, linear.y, linear.z, background.a());
     ctx.settings = &s;
     ctx.truePositions = _debug == DEBUG_BOTTOM_HIT;
     warnIfScaledUnevenly(ctx.view);
@@ -383,6 +386,7 @@ SceneLighting WaterNodeImpl::sceneLighting(const ViewFrame& v, const PassPlan& p
     SceneLighting l;
     l.towardsSun = s.getSunDirection();
     l.level = v.ctx.level;
+    l.display = true; // the view's own: what the kit draws there is encoded once, at the end
     // eq. 10: with the eye under water every object is seen through water
     if (v.ctx.eyeBelow) {
         l.fogColor = s.getBodyColor();

@@ -9,9 +9,9 @@ EnvironmentMap::EnvironmentMap(osg::Group* scene, osg::StateSet* sceneState, int
     _cube = new osg::TextureCubeMap;
     _cube->setName("osgWater.environment");
     _cube->setTextureSize(size, size);
-    _cube->setInternalFormat(GL_RGBA8);
+    _cube->setInternalFormat(GL_RGBA16F_ARB); // linear light, as the pass targets
     _cube->setSourceFormat(GL_RGBA);
-    _cube->setSourceType(GL_UNSIGNED_BYTE);
+    _cube->setSourceType(GL_FLOAT);
     _cube->setFilter(osg::Texture::MIN_FILTER, osg::Texture::LINEAR);
     _cube->setFilter(osg::Texture::MAG_FILTER, osg::Texture::LINEAR);
     for (osg::Texture::WrapParameter w : { osg::Texture::WRAP_S, osg::Texture::WRAP_T, osg::Texture::WRAP_R })

@@ -129,5 +129,6 @@ REGISTER_OBJECT_WRAPPER(osgWater_WaterSettings, new osgWater::WaterSettings, osg
     ADD_PRECISE_VEC3F_SERIALIZER(SunDirection, osgWater::WaterSettings::defaultSunDirection());
     ADD_PRECISE_VEC3F_SERIALIZER(SunColor, osg::Vec3f(1.0f, 1.0f, 0.9f));
     ADD_PRECISE_VEC3F_SERIALIZER(AmbientColor, osg::Vec3f(0.35f, 0.38f, 0.45f));
+    ADD_PRECISE_FLOAT_SERIALIZER(Exposure, 1.0f);
 }
 

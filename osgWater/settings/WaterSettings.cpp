@@ -56,7 +56,7 @@ WaterSettings::WaterSettings()
       _underwaterModel(UNDERWATER_PHYSICAL), _glowEnabled(true), _glowIntensity(1.0f), _glowRadius(3.0f),
       _glowResolution(0.25f), _glowExponent(200.0f),
       _sunDirection(defaultSunDirection()), _sunColor(1.0f, 1.0f, 0.9f), _ambientColor(0.35f, 0.38f, 0.45f),
-      _revision(0)
+      _exposure(1.0f), _revision(0)
 {
 }
 
@@ -98,7 +98,7 @@ WaterSettings::WaterSettings(const WaterSettings& o, const osg::CopyOp& copyop)
       _underwaterModel(o._underwaterModel), _glowEnabled(o._glowEnabled), _glowIntensity(o._glowIntensity),
       _glowRadius(o._glowRadius), _glowResolution(o._glowResolution), _glowExponent(o._glowExponent),
       _sunDirection(o._sunDirection), _sunColor(o._sunColor), _ambientColor(o._ambientColor),
-      _revision(0)
+      _exposure(o._exposure), _revision(0)
 {
 }
 
@@ -218,6 +218,7 @@ void WaterSettings::setGlowResolution(float f) { _glowResolution = clampOr("glow
 void WaterSettings::setGlowExponent(float e) { _glowExponent = clampOr("glowExponent", e, 1.0f, 10000.0f, 200.0f); touch(); }
 void WaterSettings::setSunColor(const osg::Vec3& c) { _sunColor = clampColor("sunColor", c, osg::Vec3(1.0f, 1.0f, 0.9f), 100.0f); touch(); }
 void WaterSettings::setAmbientColor(const osg::Vec3& c) { _ambientColor = clampColor("ambientColor", c, osg::Vec3(0.35f, 0.38f, 0.45f), 100.0f); touch(); }
+void WaterSettings::setExposure(float e) { _exposure = clampOr("exposure", e, 0.0f, 1000.0f, 1.0f); touch(); }
 
 void WaterSettings::setFovExtension(float nearExt, float farExt, float falloffHeight)
 {

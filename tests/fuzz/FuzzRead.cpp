@@ -41,7 +41,7 @@ std::string checkSettings(const osgWater::WaterSettings& s)
                              s.getFovExtensionNear(), s.getFovExtensionFar(), s.getFovExtensionFalloff(),
                              s.getClipOffset(), s.getCausticsIntensity(), s.getNormalReflectance(),
                              s.getFresnelReciprocalPower(), s.getReflectionPlaneHeight(), s.getRefractionPlaneDepth(),
-                             s.getPassTargetScale(), s.getCausticsMotionTolerance() };
+                             s.getPassTargetScale(), s.getCausticsMotionTolerance(), s.getExposure() };
     for (float v : values)
         if (!std::isfinite(v)) return "a setting is not finite";
     if (!finite(s.getWaterColor()) || !finite(s.getSunDirection()) || !finite(s.getSunColor()) ||

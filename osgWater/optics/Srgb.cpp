@@ -1,0 +1,23 @@
+#include "optics/Srgb.h"
+#include <algorithm>
+#include <cmath>
+
+using namespace osgWater;
+
+float optics::decodeSrgb(float c)
+{
+    c = c > 0.0f ? std::min(c, 1.0f) : 0.0f; // NaN too: black
+    return c < 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
+}
+
+float optics::encodeSrgb(float c)
+{
+    c = c > 0.0f ? std::min(c, 1.0f) : 0.0f; // NaN too: black
+    return c < 0.0031308f ? c * 12.92f : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f;
+}
+
+glm::vec3 optics::decodeSrgb(const glm::vec3& c) { return glm::vec3(decodeSrgb(c.x), decodeSrgb(c.y), decodeSrgb(c.z)); }
+
+glm::vec3 optics::encodeSrgb(const glm::vec3& c) { return glm::vec3(encodeSrgb(c.x), encodeSrgb(c.y), encodeSrgb(c.z)); }
+
+glm::vec3 optics::display(const glm::vec3& linear, float exposure) { return encodeSrgb(exposure * linear); }

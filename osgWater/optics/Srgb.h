@@ -1,0 +1,23 @@
+/* osgWater - natural water for OpenSceneGraph */
+#ifndef OSGWATER_SRGB
+#define OSGWATER_SRGB 1
+
+#include <osgWater/Export>
+#include <glm/glm.hpp>
+
+//! CPU mirror of shaders/srgb.glsl: the sRGB curve (IEC 61966-2-1) between display values, as files
+//! and the view hold them, and the linear light every sum of the kit is made in.
+namespace osgWater { namespace optics {
+
+//! A display value in [0, 1] (clamped) as linear light.
+OSGWATER_EXPORT float decodeSrgb(float c);
+OSGWATER_EXPORT glm::vec3 decodeSrgb(const glm::vec3& c);
+//! Linear light (clamped to [0, 1]) as a display value.
+OSGWATER_EXPORT float encodeSrgb(float c);
+OSGWATER_EXPORT glm::vec3 encodeSrgb(const glm::vec3& c);
+//! What the view shows for linear light: exposed, then encoded (owDisplay).
+OSGWATER_EXPORT glm::vec3 display(const glm::vec3& linear, float exposure);
+
+} }
+
+#endif
