@@ -29,14 +29,14 @@ osg::ref_ptr<osg::GraphicsContext> createPbuffer(int width, int height, std::str
     return gc;
 }
 
-osg::Texture2D* attachFloatTarget(osg::Camera* camera, osg::GraphicsContext* gc, int w, int h)
+osg::Texture2D* attachFloatTarget(osg::Camera* camera, osg::GraphicsContext* gc, int w, int h, GLenum format)
 {
     osg::Texture2D* t = new osg::Texture2D;
     t->setName("mainTarget");
     t->setTextureSize(w, h);
-    t->setInternalFormat(GL_RGBA32F_ARB);
+    t->setInternalFormat(format);
     t->setSourceFormat(GL_RGBA);
-    t->setSourceType(GL_FLOAT);
+    t->setSourceType(format == GL_SRGB8_ALPHA8 ? GL_UNSIGNED_BYTE : GL_FLOAT);
     t->setFilter(osg::Texture::MIN_FILTER, osg::Texture::NEAREST);
     t->setFilter(osg::Texture::MAG_FILTER, osg::Texture::NEAREST);
     camera->setGraphicsContext(gc);
@@ -47,14 +47,14 @@ osg::Texture2D* attachFloatTarget(osg::Camera* camera, osg::GraphicsContext* gc,
     return t;
 }
 
-Harness::Harness(int width, int height) : _w(width), _h(height)
+Harness::Harness(int width, int height, GLenum targetFormat) : _w(width), _h(height)
 {
     _gc = createPbuffer(width, height, _why);
     if (!_gc.valid()) return;
     _viewer = new osgViewer::Viewer;
     _viewer->setThreadingModel(osgViewer::ViewerBase::SingleThreaded);
     _viewer->setReleaseContextAtEndOfFrameHint(false);
-    _target = attachFloatTarget(_viewer->getCamera(), _gc.get(), width, height);
+    _target = attachFloatTarget(_viewer->getCamera(), _gc.get(), width, height, targetFormat);
     _viewer->getCamera()->setClearColor(osg::Vec4(0.2f, 0.3f, 0.8f, 1.0f));
     _viewer->getCamera()->setComputeNearFarMode(osg::CullSettings::DO_NOT_COMPUTE_NEAR_FAR);
 }

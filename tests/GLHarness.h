@@ -41,7 +41,9 @@ struct ContextProbe {
 class Harness
 {
 public:
-    Harness(int width, int height);
+    //! A main view of width x height into a float target (or `targetFormat`: GL_SRGB8_ALPHA8 stores
+    //! display values as a window's framebuffer usually does).
+    Harness(int width, int height, GLenum targetFormat = GL_RGBA32F_ARB);
     bool ok() const { return _gc.valid(); }
     const std::string& why() const { return _why; }
     osgViewer::Viewer* viewer() { return _viewer.get(); }
@@ -69,8 +71,9 @@ private:
     osg::ref_ptr<osg::Texture2D> _target;
 };
 
-//! Binds a float RGBA texture target to a camera (FBO) on the given context.
-osg::Texture2D* attachFloatTarget(osg::Camera* camera, osg::GraphicsContext* gc, int w, int h);
+//! Binds a float RGBA texture target (or one of `format`) to a camera (FBO) on the given context.
+osg::Texture2D* attachFloatTarget(osg::Camera* camera, osg::GraphicsContext* gc, int w, int h,
+                                  GLenum format = GL_RGBA32F_ARB);
 osg::ref_ptr<osg::Image> readTexture(osg::GraphicsContext* gc, osg::Texture2D* texture, int level = 0);
 
 // --- GL objects ----------------------------------------------------------------------------------

@@ -3,7 +3,10 @@
 #include "node/WaterNodeImpl.h"
 #include "GLHarness.h"
 #include <osgWater/WaterNode>
+#include "optics/Srgb.h"
+#include <algorithm>
 #include <cmath>
+#include <iostream>
 
 using namespace testing_gl;
 using namespace osgWater;
@@ -104,6 +107,44 @@ TEST(Glow, ChangesOnlyPixelsNearTheHighlight)
     EXPECT_LE(maxFar, 1.0f / 255.0f) << "glow away from the highlight";
     EXPECT_GT(maxGain, 0.2f) << "no visible glow at the highlight";
     EXPECT_GE(minGain, -1e-6f) << "glow only adds light";
+}
+
+// The glow is light: where the view stores sRGB (an 8-bit sRGB target, as a window's framebuffer
+// usually is) it is added to the finished image's linear light, each pixel encode(decode(without)
+// + glow) within 2.5/255 (two 8-bit images, one glow target texel a pixel). Added to display values
+// instead it would be off by more than 0.03 at the highlight's fringe.
+TEST(Glow, AddsLinearLightWhereTheViewStoresSrgb)
+{
+    Harness h(200, 150, GL_SRGB8_ALPHA8);
+    REQUIRE_GL(h);
+    osg::ref_ptr<WaterNode> water = sunnyWater(osg::Vec3(0.0f, 0.866f, 0.5f));
+    water->getSettings()->setGlowResolution(1.0f); // a glow texel a view pixel: no upsampling
+    Pair p = renderPair(h, water.get());
+    ASSERT_TRUE(p.drawn);
+    ViewPasses* passes = osgWater::internals(*water).getViewPasses(h.camera());
+    osg::ref_ptr<osg::Image> glow = h.readTexture(passes->getGlow()->getGlowTexture());
+    ASSERT_EQ(glow->s(), h.width());
+    const float intensity = water->getSettings()->getGlowIntensity();
+    double worst = 0.0, displaySum = 0.0;
+    int checked = 0;
+    for (int y = 0; y < h.height(); ++y)
+        for (int x = 0; x < h.width(); ++x) {
+            const float* g = pixel(glow.get(), x, y);
+            if (std::max(g[0], std::max(g[1], g[2])) < 0.02f) continue;
+            const float* off = pixel(p.off.get(), x, y);
+            const float* on = pixel(p.on.get(), x, y);
+            for (int c = 0; c < 3; ++c) {
+                const float expect = optics::encodeSrgb(optics::decodeSrgb(off[c]) + intensity * g[c]);
+                worst = std::max(worst, double(std::fabs(on[c] - expect)));
+                displaySum = std::max(displaySum, double(std::fabs(std::min(off[c] + intensity * g[c], 1.0f) - expect)));
+            }
+            ++checked;
+        }
+    std::cout << checked << " glowing pixels, worst " << worst * 255.0 << "/255; a display-value sum would be "
+              << displaySum << " off" << std::endl;
+    ASSERT_GT(checked, 20);
+    EXPECT_GT(displaySum, 0.03) << "the test scene cannot tell linear from display sums";
+    EXPECT_LT(worst, 2.5 / 255.0);
 }
 
 TEST(Glow, AnObjectInFrontOfTheHighlightHidesIt)

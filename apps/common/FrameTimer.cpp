@@ -97,7 +97,7 @@ bool setUpViewer(osgViewer::Viewer& viewer, bool headless, int width, int height
         camera->setRenderTargetImplementation(osg::Camera::FRAME_BUFFER_OBJECT);
         osg::Texture2D* target = new osg::Texture2D;
         target->setTextureSize(width, height);
-        target->setInternalFormat(GL_RGBA8);
+        target->setInternalFormat(GL_SRGB8_ALPHA8); // display values, as a window's; the glow adds in linear light
         target->setFilter(osg::Texture::MIN_FILTER, osg::Texture::NEAREST);
         target->setFilter(osg::Texture::MAG_FILTER, osg::Texture::NEAREST);
         camera->attach(osg::Camera::COLOR_BUFFER, target);

@@ -81,6 +81,7 @@ void LakeOptions::describe(osg::ApplicationUsage& u)
     u.addCommandLineOption("--underwater-model <physical|thesis>", "Surface seen from below: Snell with total internal reflection, or the thesis's eq. 12");
     u.addCommandLineOption("--no-glow", "Switch the sun's glow off");
     u.addCommandLineOption("--glow <intensity>", "Glow intensity (default 1)");
+    u.addCommandLineOption("--exposure <e>", "Linear light times e before the sRGB encoding (default 1)");
     u.addCommandLineOption("--compare-glow", "Headless: time glow off and on in one run");
     u.addCommandLineOption("--compare-caustics", "Headless: time caustics off and each gather path in one run");
 }
@@ -169,6 +170,7 @@ bool LakeOptions::read(osg::ArgumentParser& args)
         return false;
     if (args.read("--no-glow")) _setters.push_back([](WaterSettings& w) { w.setGlowEnabled(false); });
     if (args.read("--glow", f)) _setters.push_back([f](WaterSettings& w) { w.setGlowIntensity(f); });
+    if (args.read("--exposure", f)) _setters.push_back([f](WaterSettings& w) { w.setExposure(f); });
     if (args.read("--sun", f, g, h)) _setters.push_back([f, g, h](WaterSettings& w) { w.setSunDirection(osg::Vec3(f, g, h)); });
 
     for (int pos = 1; pos < args.argc(); ++pos)

@@ -88,6 +88,9 @@ GlowPasses::GlowPasses(osg::Group* scene, osg::StateSet* sceneState, osg::StateS
     c->addUniform(new osg::Uniform("osgWater_GlowTex", int(UNIT_PASS_INPUT)));
     c->addUniform(new osg::Uniform("osgWater_GlowIntensity", 1.0f));
     c->setAttributeAndModes(new osg::BlendFunc(GL_ONE, GL_ONE));
+    // the glow is linear light: where the view's framebuffer stores sRGB, GL decodes the finished
+    // image, adds, and encodes again; elsewhere the glow adds to display values
+    c->setMode(GL_FRAMEBUFFER_SRGB, osg::StateAttribute::ON);
     c->setAttributeAndModes(new osg::Depth(osg::Depth::ALWAYS, 0.0, 1.0, false));
     c->setMode(GL_CULL_FACE, osg::StateAttribute::OFF);
     setUpPassBin(c, PASS_GLOW_COMPOSITE);
