@@ -1,20 +1,28 @@
 // The kit's colour convention: light is summed in linear units. Colours that come from files (the
 // scene's materials and textures) and the view's clear colour are sRGB-encoded display values,
 // decoded here once; what the kit draws in the view itself is encoded once, at the end, after the
-// exposure. The pass targets between hold linear light. The sRGB curve exactly (IEC 61966-2-1);
-// mirrored in osgWater/optics/Srgb.cpp.
+// exposure. The pass targets between hold linear light. The sRGB curve (IEC 61966-2-1) with its
+// power pieces fitted: a quintic for decoding and a series in sqrt(x), x^1/4, x^1/8 for encoding,
+// each within 0.05/255 of the curve once in display values; pow costs a software rasteriser several
+// times more, on every fragment of every scene pass. Mirrored in osgWater/optics/Srgb.cpp
+// (decodeSrgbFitted, encodeSrgbFitted), which a test holds to the exact curve.
 uniform float osgWater_Exposure; // linear light is multiplied by it before the encoding
 
 vec3 owDecodeSrgb(vec3 c)
 {
     c = clamp(c, 0.0, 1.0);
-    return mix(c / 12.92, pow((c + 0.055) / 1.055, vec3(2.4)), step(vec3(0.04045), c));
+    // ((c + 0.055) / 1.055)^2.4 above the knee
+    vec3 p = 0.00095477318 + c * (0.031784446 + c * (0.52634035 + c * (0.64794601 + c * (-0.28556063 + c * 0.078688271))));
+    return mix(c / 12.92, p, step(vec3(0.04045), c));
 }
 
 vec3 owEncodeSrgb(vec3 c)
 {
-    c = clamp(c, 0.0, 1.0); // pow of a negative is undefined; above 1 the display clips anyway
-    return mix(c * 12.92, 1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055, step(vec3(0.0031308), c));
+    c = clamp(c, 0.0, 1.0); // no root of a negative; above 1 the display clips anyway
+    // 1.055 c^(1/2.4) - 0.055 above the knee
+    vec3 s1 = sqrt(c), s2 = sqrt(s1), s3 = sqrt(s2);
+    vec3 p = 0.65468427 * s1 + 0.68885027 * s2 - 0.31928944 * s3 - 0.020599216 * c - 0.0037160980;
+    return mix(c * 12.92, p, step(vec3(0.0031308), c));
 }
 
 //! Linear light as the view shows it: exposed, then encoded.

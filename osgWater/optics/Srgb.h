@@ -18,6 +18,11 @@ OSGWATER_EXPORT glm::vec3 encodeSrgb(const glm::vec3& c);
 //! What the view shows for linear light: exposed, then encoded (owDisplay).
 OSGWATER_EXPORT glm::vec3 display(const glm::vec3& linear, float exposure);
 
+//! The shader's curves line by line (owDecodeSrgb, owEncodeSrgb): the power pieces fitted, a quintic
+//! and a series in roots, each within 0.05/255 of the exact curve in display values.
+OSGWATER_EXPORT float decodeSrgbFitted(float c);
+OSGWATER_EXPORT float encodeSrgbFitted(float c);
+
 } }
 
 #endif
