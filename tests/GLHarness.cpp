@@ -264,6 +264,12 @@ osg::ref_ptr<osgWater::WaterNode> flatWaterOverBed(float depth)
     return water;
 }
 
+osg::Vec3 shown(const osg::Vec3& linear)
+{
+    const glm::vec3 e = osgWater::optics::encodeSrgb(glm::vec3(linear.x(), linear.y(), linear.z()));
+    return osg::Vec3(e.x, e.y, e.z);
+}
+
 osgWater::Wave makeWave(float dx, float dy, float wavelength, float amplitude)
 {
     osgWater::Wave w;

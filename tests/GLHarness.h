@@ -124,6 +124,9 @@ std::string waterModelTestName(const ::testing::TestParamInfo<std::string>& info
 //! A wave of the sum of sines, for surfaces built in tests.
 osgWater::Wave makeWave(float dx, float dy, float wavelength, float amplitude);
 
+//! Linear light as the view shows it: encoded to sRGB (exposure 1, the exact curve).
+osg::Vec3 shown(const osg::Vec3& linear);
+
 //! The emissive bed colour of flatWaterOverBed.
 const osg::Vec3 kBedGrey(0.6f, 0.5f, 0.4f);
 //! Flat water 400 m across at z = 0 over a uniform emissive bed of kBedGrey `depth` metres below: the

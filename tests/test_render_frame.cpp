@@ -24,13 +24,6 @@ osg::Vec3 lambert(const WaterSettings& s, float ndl, float sunShare)
     return s.getAmbientColor() * kMaterialAmbient + s.getSunColor() * (kMaterialDiffuse * ndl * sunShare);
 }
 
-// linear light as the view shows it (exposure 1)
-osg::Vec3 shown(const osg::Vec3& linear)
-{
-    const glm::vec3 e = optics::encodeSrgb(glm::vec3(linear.x(), linear.y(), linear.z()));
-    return osg::Vec3(e.x, e.y, e.z);
-}
-
 osg::Vec3 colourAt(Harness& h, const osg::Image* img, const osg::Vec3d& p)
 {
     const osg::Vec2d px = h.pixelOf(p);

@@ -43,13 +43,6 @@ osg::Vec3 fog(const osg::Vec3& c, const osg::Vec3& w, const osg::Vec3& k, double
     return osg::Vec3(t.x, t.y, t.z);
 }
 
-// linear light as the view shows it (exposure 1)
-osg::Vec3 shown(const osg::Vec3& linear)
-{
-    const glm::vec3 e = optics::encodeSrgb(glm::vec3(linear.x(), linear.y(), linear.z()));
-    return osg::Vec3(e.x, e.y, e.z);
-}
-
 }
 
 // The thesis's one k (0.1 per metre here: the far quad stays visible) and each per-channel preset.
