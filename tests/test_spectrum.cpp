@@ -4,12 +4,13 @@
 // No GPU.
 #include "surface/Spectrum.h"
 #include <gtest/gtest.h>
+#include <osg/Math>
 #include <cmath>
 
 using namespace osgWater::spectrum;
 
 namespace {
-const double kPi = 3.14159265358979323846;
+const double kPi = osg::PI;
 
 // the trapezoid rule on [a, b] with n panels
 template <class F> double integrate(F f, double a, double b, int n)

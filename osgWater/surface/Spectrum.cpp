@@ -1,12 +1,11 @@
 #include "surface/Spectrum.h"
+#include <osg/Math>
 #include <algorithm>
 #include <cmath>
 
 using namespace osgWater;
 
 namespace {
-
-const double kPi = 3.14159265358979323846;
 
 // (g k + (sigma/rho) k^3) tanh(k h) = omega^2, and its derivative in k
 double omegaSquared(double k, double depth)
@@ -94,7 +93,7 @@ double spectrum::directionalSpread(double theta, double s)
 {
     s = std::max(s, 0.0);
     // Q(s) = 2^(2s - 1) Gamma(s + 1)^2 / (pi Gamma(2s + 1)), through logarithms: s reaches hundreds
-    const double logQ = (2.0 * s - 1.0) * std::log(2.0) + 2.0 * std::lgamma(s + 1.0) - std::log(kPi) - std::lgamma(2.0 * s + 1.0);
+    const double logQ = (2.0 * s - 1.0) * std::log(2.0) + 2.0 * std::lgamma(s + 1.0) - std::log(osg::PI) - std::lgamma(2.0 * s + 1.0);
     const double c = std::fabs(std::cos(0.5 * theta));
     if (c <= 0.0) return s > 0.0 ? 0.0 : std::exp(logQ);
     return std::exp(logQ + 2.0 * s * std::log(c));
@@ -115,6 +114,6 @@ double spectrum::wavenumberSpectrum(double kx, double ky, const WindSea& sea)
     const double s = spreadExponent(omega, j.peakOmega, sea.windSpeed, sea.swell);
     const double blend = std::min(std::max(sea.spread, 0.0), 1.0);
     const double theta = std::atan2(ky, kx) - sea.windDirection;
-    const double D = (1.0 - blend) * directionalSpread(theta, s) + blend / (2.0 * kPi);
+    const double D = (1.0 - blend) * directionalSpread(theta, s) + blend / (2.0 * osg::PI);
     return jonswapSpectrum(omega, j) * tmaFactor(omega, sea.depth) * groupVelocity(k, sea.depth) * D / k;
 }
