@@ -194,25 +194,33 @@ osg::Geode* emissiveQuad(const osg::Vec3& a, const osg::Vec3& b, const osg::Vec3
     return geode;
 }
 
+osg::Texture2D* nearestTexture(int columns, int rows, const std::function<osg::Vec3ub(int, int)>& texel,
+                               osg::Texture::WrapMode wrap)
+{
+    osg::ref_ptr<osg::Image> img = new osg::Image;
+    img->allocateImage(columns, rows, 1, GL_RGBA, GL_UNSIGNED_BYTE);
+    for (int j = 0; j < rows; ++j)
+        for (int i = 0; i < columns; ++i) {
+            unsigned char* p = img->data(i, j);
+            const osg::Vec3ub c = texel(i, j);
+            p[0] = c.x(); p[1] = c.y(); p[2] = c.z(); p[3] = 255;
+        }
+    osg::Texture2D* t = new osg::Texture2D(img.get());
+    t->setFilter(osg::Texture::MIN_FILTER, osg::Texture::NEAREST);
+    t->setFilter(osg::Texture::MAG_FILTER, osg::Texture::NEAREST);
+    t->setWrap(osg::Texture::WRAP_S, wrap);
+    t->setWrap(osg::Texture::WRAP_T, wrap);
+    t->setResizeNonPowerOfTwoHint(false);
+    return t;
+}
+
 osg::Geode* checkerPlane(float z, float size, float cell, int quadsPerSide)
 {
     // one texel per cell, repeated: exact cell edges with nearest filtering
-    const int n = 2;
-    osg::ref_ptr<osg::Image> img = new osg::Image;
-    img->allocateImage(n, n, 1, GL_RGBA, GL_UNSIGNED_BYTE);
-    for (int j = 0; j < n; ++j)
-        for (int i = 0; i < n; ++i) {
-            unsigned char* p = img->data(i, j);
-            const unsigned char c = ((i + j) % 2 == 0) ? 255 : 0;
-            p[0] = p[1] = p[2] = c;
-            p[3] = 255;
-        }
-    osg::Texture2D* tex = new osg::Texture2D(img.get());
-    tex->setFilter(osg::Texture::MIN_FILTER, osg::Texture::NEAREST);
-    tex->setFilter(osg::Texture::MAG_FILTER, osg::Texture::NEAREST);
-    tex->setWrap(osg::Texture::WRAP_S, osg::Texture::REPEAT);
-    tex->setWrap(osg::Texture::WRAP_T, osg::Texture::REPEAT);
-    tex->setResizeNonPowerOfTwoHint(false);
+    osg::Texture2D* tex = nearestTexture(2, 2, [](int i, int j) {
+        const unsigned char c = ((i + j) % 2 == 0) ? 255 : 0;
+        return osg::Vec3ub(c, c, c);
+    }, osg::Texture::REPEAT);
 
     const float h = 0.5f * size, step = size / float(std::max(quadsPerSide, 1));
     osg::Geometry* g = new osg::Geometry;

@@ -101,6 +101,9 @@ osg::Geode* litQuad(const osg::Vec3& a, const osg::Vec3& b, const osg::Vec3& c, 
 //! An unlit (emissive) quad from four corners: its pixels are exactly `color`.
 osg::Geode* emissiveQuad(const osg::Vec3& a, const osg::Vec3& b, const osg::Vec3& c, const osg::Vec3& d,
                          const osg::Vec4& color);
+//! A texture of columns x rows opaque texels, texel (i, j) = `texel(i, j)`, filtered nearest.
+osg::Texture2D* nearestTexture(int columns, int rows, const std::function<osg::Vec3ub(int, int)>& texel,
+                               osg::Texture::WrapMode wrap);
 //! A horizontal square at height z, side `size`, with an unlit black/white checkerboard of
 //! `cell` metres (cell (i, j) white when i + j is even; nearest filtering), drawn as
 //! `quadsPerSide` x `quadsPerSide` quads (geometry moved per vertex needs more than one).

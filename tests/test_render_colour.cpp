@@ -12,26 +12,6 @@ using namespace osgWater;
 
 namespace {
 
-// A texture of `columns` x `rows` texels (nearest, clamped) whose texel (i, j) is `texel(i, j)`.
-osg::Texture2D* blockTexture(int columns, int rows, const std::function<osg::Vec3ub(int, int)>& texel)
-{
-    osg::ref_ptr<osg::Image> img = new osg::Image;
-    img->allocateImage(columns, rows, 1, GL_RGBA, GL_UNSIGNED_BYTE);
-    for (int j = 0; j < rows; ++j)
-        for (int i = 0; i < columns; ++i) {
-            unsigned char* p = img->data(i, j);
-            const osg::Vec3ub c = texel(i, j);
-            p[0] = c.x(); p[1] = c.y(); p[2] = c.z(); p[3] = 255;
-        }
-    osg::Texture2D* t = new osg::Texture2D(img.get());
-    t->setFilter(osg::Texture::MIN_FILTER, osg::Texture::NEAREST);
-    t->setFilter(osg::Texture::MAG_FILTER, osg::Texture::NEAREST);
-    t->setWrap(osg::Texture::WRAP_S, osg::Texture::CLAMP_TO_EDGE);
-    t->setWrap(osg::Texture::WRAP_T, osg::Texture::CLAMP_TO_EDGE);
-    t->setResizeNonPowerOfTwoHint(false);
-    return t;
-}
-
 // An unlit (white emission, no ambient or diffuse) quad in the plane y = `y`, x in [x0, x1], z in
 // [z0, z1], facing -y, textured with `texture` (s along x, t along z).
 osg::Geode* unlitTexturedWall(float y, float x0, float x1, float z0, float z1, osg::Texture2D* texture)
@@ -73,7 +53,7 @@ void expectBlocksShowTheirTexels(bool waterInView, float exposure = 1.0f)
     water->getSettings()->setExposure(exposure);
     const float z0 = waterInView ? 0.5f : 4.0f, z1 = z0 + 2.0f;
     water->addChild(unlitTexturedWall(6.0f, -2.0f, 2.0f, z0, z1,
-                                      blockTexture(4, 1, [](int i, int) { return kBlocks[i]; })));
+                                      nearestTexture(4, 1, [](int i, int) { return kBlocks[i]; }, osg::Texture::CLAMP_TO_EDGE)));
     h.setScene(water.get());
     const osg::Vec3d eye(0, -2, 1.0);
     h.lookAt(eye, waterInView ? osg::Vec3d(0, 6, 1.0) : osg::Vec3d(0, 6, 0.5 * (z0 + z1)));
@@ -131,10 +111,10 @@ TEST(RenderColour, ASmoothSkyReflectedInCalmWaterKeepsItsLevels)
     s.setFresnelExponent(0.1f);
     s.setWaterColor(osg::Vec3(0.0f, 0.0f, 0.0f));
     s.setAttenuation(100.0f);
-    water->addChild(unlitTexturedWall(wallY, -60.0f, 60.0f, 0.0f, wallTop, blockTexture(1, rows, [](int, int j) {
+    water->addChild(unlitTexturedWall(wallY, -60.0f, 60.0f, 0.0f, wallTop, nearestTexture(1, rows, [](int, int j) {
         const unsigned char l = (unsigned char)(j / 4);
         return osg::Vec3ub(l, l, l);
-    })));
+    }, osg::Texture::CLAMP_TO_EDGE)));
     h.setScene(water.get());
     h.lookAt(osg::Vec3d(0, 0, 1.5), osg::Vec3d(0, 10, -1.5), 60.0);
     h.frame(0.0);
