@@ -6,6 +6,7 @@ PACKAGES=(
   cmake g++ make pkg-config
   libopenscenegraph-dev openscenegraph   # OSG 3.6.5: library, osgDB plugins (obj, png), osgviewer
   libglm-dev                             # CPU mirror of the shader maths
+  libfftw3-dev                           # the wave spectrum's FFT cascades
   libgtest-dev                           # tests
   libembree-dev nlohmann-json3-dev gnuplot-nox  # benchmark: exact reference, results.json, plot
   xvfb xauth libgl1-mesa-dri             # headless rendering: Xvfb + Mesa llvmpipe

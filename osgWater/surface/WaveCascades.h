@@ -1,0 +1,122 @@
+/* osgWater - natural water for OpenSceneGraph */
+#ifndef OSGWATER_WAVECASCADES
+#define OSGWATER_WAVECASCADES 1
+
+#include "surface/Spectrum.h"
+#include <osgWater/Export>
+#include <osg/Vec2f>
+#include <osg/Vec3d>
+#include <osg/Vec4f>
+#include <complex>
+#include <memory>
+#include <vector>
+
+namespace osgWater {
+
+//! One cascade's share of the spectrum: a square tile of side `tile` metres sampled `size` x `size`
+//! times, holding the wavenumbers kLow <= |k| < kHigh.
+struct CascadeBand {
+    double tile = 0.0, kLow = 0.0, kHigh = 0.0;
+};
+
+//! A wind sea realised by FFT cascades (Tessendorf's synthesis): each cascade owns one band of
+//! wavenumbers and is a periodic tile of heights, horizontal displacements and slopes, evaluated at
+//! any time t with FFTW (float plans made once per size and shared). Nothing loops in time: every
+//! bin keeps its own omega from the dispersion, and omega t is reduced in double precision.
+//!
+//! The bands are chosen against repetition inside the water's extent. The first cascade's tile is
+//! larger than the extent, so it never repeats inside it. The others split the rest, up to
+//! SHORTEST_WAVE, into equal shares of half the height variance plus half the slope variance, each a
+//! tile of its own size, so no one tile's repeat holds most of the heights (seen far off) or of the
+//! slopes (seen close up); the tiles are nudged apart until no two repeat together inside the
+//! extent. Every band's shortest wave spans at least SAMPLES_PER_WAVE texels, so bilinear filtering
+//! (the shader's, and the height query's, which mirrors it) keeps it.
+class OSGWATER_EXPORT WaveCascades
+{
+public:
+    static constexpr unsigned int CASCADES = 5;
+    static constexpr double SAMPLES_PER_WAVE = 4.0;
+    //! Metres: the shortest wave the cascades hold; shorter slopes are the shading's roughness.
+    static constexpr double SHORTEST_WAVE = 0.02;
+
+    struct Params {
+        spectrum::WindSea sea;
+        double extent = 100.0;      //!< m: the side of the square the water covers
+        unsigned int size = 256;    //!< samples per tile side (a power of two, 16..1024)
+        double choppiness = 0.0;    //!< horizontal displacement scale: 0 none, 1 Tessendorf's full
+        unsigned int seed = 1;
+    };
+
+    //! One texel: the displacement (x, y, and the height) and the slopes dh/dx, dh/dy of the
+    //! undisplaced surface there.
+    struct Texel {
+        osg::Vec4f displacement; // dx, dy, h, 0
+        osg::Vec2f slope;
+    };
+
+    explicit WaveCascades(const Params& params);
+    ~WaveCascades();
+    WaveCascades(const WaveCascades&) = delete;
+    WaveCascades& operator=(const WaveCascades&) = delete;
+
+    const Params& params() const { return _params; }
+    //! Where each cascade's band lies; empty when the sea has no waves (no wind, no fetch).
+    const std::vector<CascadeBand>& bands() const { return _bands; }
+    //! The bands for a sea over an extent (what the constructor uses).
+    static std::vector<CascadeBand> chooseBands(const spectrum::WindSea& sea, double extent, unsigned int size);
+
+    //! The fields at time t (seconds); the previous time's are replaced.
+    void update(double t);
+    double time() const { return _time; }
+
+    //! The texels of cascade c (size x size, row y major), as of the last update.
+    const std::vector<Texel>& texels(unsigned int c) const { return _cascades[c].texels; }
+
+    //! The sum of the cascades at the undisplaced point (x, y), each filtered bilinearly as a
+    //! repeating texture is (texel centres at (i + 1/2) tile / size, plus half a texel: the FFT's
+    //! sample i lies at i tile / size).
+    Texel sample(double x, double y) const;
+    //! The height of the displaced surface over (x, y): the undisplaced point whose displacement
+    //! lands there is found by fixed-point iteration, then its height is taken.
+    double height(double x, double y) const;
+    //! The unit normal of the displaced surface over (x, y), from the slopes at that point.
+    osg::Vec3d normal(double x, double y) const;
+
+    //! The same fields summed over every bin directly, in double precision, at the undisplaced
+    //! (x, y), as of the last update: the FFT's reference (slow: every bin of every cascade, or of
+    //! cascade `only`).
+    Texel directSum(double x, double y, int only = -1) const;
+
+    //! The variance the bins hold: sum of S(k) dk^2 over every cascade's bins (m^2).
+    double binVariance() const { return _binVariance; }
+    //! The spectrum's integral over the bands, sum of int S(k) d^2k (m^2).
+    static double bandVariance(const spectrum::WindSea& sea, const std::vector<CascadeBand>& bands);
+
+private:
+    struct Bin {
+        unsigned int index;            // into the size x size spectrum
+        std::complex<float> h0, h0MinusConj; // h0(k) and conj(h0(-k))
+        double omega;
+        float kx, ky, k;
+    };
+    struct Cascade {
+        CascadeBand band;
+        std::vector<Bin> bins;
+        std::vector<Texel> texels;
+    };
+    void evaluate(Cascade& c, double t);
+    //! The sample at the undisplaced point whose displacement lands on (x, y) (fixed-point iteration).
+    Texel over(double x, double y) const;
+
+    Params _params;
+    std::vector<CascadeBand> _bands;
+    std::vector<Cascade> _cascades;
+    double _time;
+    double _binVariance;
+    struct Plans;
+    std::unique_ptr<Plans> _plans;
+};
+
+}
+
+#endif
