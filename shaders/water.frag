@@ -18,6 +18,10 @@ void main()
 #else
     const float eyeSide = 1.0;
 #endif
+#ifdef OSGWATER_WIND
+    // the wind's cascades read at the pixel's footprint on the water (its longer side)
+    waterFootprint = max(length(dFdx(vLocal.xy)), length(dFdy(vLocal.xy)));
+#endif
     vec3 U = waterOnSightRay(osgWater_EyeLocal, vLocal, vDrawnError, eyeSide, N);
 #else
     vec3 U = vLocal;

@@ -1,9 +1,77 @@
+#pragma import_defines(OSGWATER_WIND)
+// The waves: the surface's height, slopes and normal, and what the drawn mesh may miss of them.
+uniform float osgWater_Level;
+
+#ifdef OSGWATER_WIND
+// The wind's waves (OSGWATER_WIND): the sum of the FFT cascades' tiles, each a layer of
+// osgWater_WaveCascades holding (h, dh/dx, dh/dy) with its mip levels. Texel i of a tile of side L
+// sampled n times is the FFT's sample at x = i L / n: its centre, (i + 1/2) / n in texture
+// coordinates. Mirrored by WaveCascades::sample (bilinear, level 0) through WaterSurface::height.
+uniform sampler2DArray osgWater_WaveCascades;
+uniform vec4 osgWater_Cascades[5];    // per cascade: (1 / tile, height bound, the band's top k, 0)
+uniform int osgWater_CascadeCount;
+uniform float osgWater_CascadeTexels; // texels along a tile's side
+
+// metres the shaded point's pixel spans on the water: the mip level the cascades are read at (0
+// reads the texels as the CPU does). Set by a fragment shader's main before it asks for the waves.
+float waterFootprint = 0.0;
+
+// (height, dh/dx, dh/dy) filtered over `footprint` metres
+vec3 waterSampleOver(vec2 p, float footprint)
+{
+    vec3 r = vec3(osgWater_Level, 0.0, 0.0);
+    for (int c = 0; c < 5; ++c) {
+        if (c >= osgWater_CascadeCount) break;
+        vec4 s = osgWater_Cascades[c];
+        float lod = log2(max(footprint * s.x * osgWater_CascadeTexels, 1e-6));
+        r += textureLod(osgWater_WaveCascades, vec3(p * s.x + 0.5 / osgWater_CascadeTexels, float(c)), lod).xyz;
+    }
+    return r;
+}
+
+float waterHeight(vec2 p)
+{
+    return waterSampleOver(p, waterFootprint).x;
+}
+
+// The height a mesh whose cells are `cell` metres across draws: the cascades averaged over two
+// cells, so the waves shorter than two cells, which the cells could only alias, are gone.
+float waterHeightDrawn(vec2 p, float cell)
+{
+    return waterSampleOver(p, 2.0 * cell).x;
+}
+
+vec3 waterHeightAndSlope(vec2 p)
+{
+    return waterSampleOver(p, waterFootprint);
+}
+
+// How far a mesh whose cells are `cell` metres across can lie from the surface: each cascade
+// taken as one wave as high as its height bound and as short as its band's shortest, faded (or
+// cut into chords) as the sum of sines' waves are.
+float waterDrawnErrorBound(float cell, bool faded)
+{
+    float e = 0.0;
+    for (int c = 0; c < 5; ++c) {
+        if (c >= osgWater_CascadeCount) break;
+        vec4 s = osgWater_Cascades[c];
+        float cellsPerWave = 6.2831853 / (max(s.z, 1e-9) * cell);
+        float keep = faded ? smoothstep(2.0, 4.0, cellsPerWave) : 1.0;
+        e += s.y * (1.0 - keep * cos(3.1415927 * min(1.0 / cellsPerWave, 1.0)));
+    }
+    return e;
+}
+
+vec3 waterNormal(vec2 p)
+{
+    return normalize(vec3(-waterSampleOver(p, waterFootprint).yz, 1.0));
+}
+#else
 // Sum of sines: h = level + sum a_i sin(k_i . xy - phase_i). Mirrored by WaterSurface::height/normal.
 // Phases arrive wrapped to [0, 2 pi) from the CPU (double precision), so time never grows here.
 uniform vec4 osgWater_Waves[8];      // (k dir.x, k dir.y, amplitude, 0)
 uniform float osgWater_WavePhases[8];
 uniform int osgWater_WaveCount;
-uniform float osgWater_Level;
 
 float waterHeight(vec2 p)
 {
@@ -65,6 +133,18 @@ float waterDrawnErrorBound(float cell, bool faded)
     }
     return e;
 }
+
+vec3 waterNormal(vec2 p)
+{
+    vec2 g = vec2(0.0);
+    for (int i = 0; i < 8; ++i) {
+        if (i >= osgWater_WaveCount) break;
+        vec4 w = osgWater_Waves[i];
+        g += w.z * cos(dot(w.xy, p) - osgWater_WavePhases[i]) * w.xy;
+    }
+    return normalize(vec3(-g, 1.0));
+}
+#endif
 
 // Where the line P + t D meets the waves, by one Newton step on f = z - h from P: the t of the
 // step. hs: (h, dh/dx, dh/dy) at P.xy. A line along the surface (f' = 0) does not move.
@@ -147,13 +227,3 @@ vec3 waterOnSteepLine(vec3 V, vec3 D, float bound, out vec3 N)
     return P;
 }
 
-vec3 waterNormal(vec2 p)
-{
-    vec2 g = vec2(0.0);
-    for (int i = 0; i < 8; ++i) {
-        if (i >= osgWater_WaveCount) break;
-        vec4 w = osgWater_Waves[i];
-        g += w.z * cos(dot(w.xy, p) - osgWater_WavePhases[i]) * w.xy;
-    }
-    return normalize(vec3(-g, 1.0));
-}

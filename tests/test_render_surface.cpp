@@ -189,3 +189,50 @@ TEST(RenderSurface, EachFragmentShadesWhereItsRayMeetsTheWaves)
     EXPECT_LT(off, 0.02);
     EXPECT_LT(percentile(e, 0.5), 1e-4) << "metres: the median pixel's crossing is found, not approximated";
 }
+
+namespace {
+osg::ref_ptr<WaterNode> windWater()
+{
+    osg::ref_ptr<WaterNode> water = lakeWater(WaterSurface::MESH_EYE_RINGS);
+    WindWaves breeze; // 5 m/s over the lake's 140 m
+    breeze.direction.set(1.0f, 0.4f);
+    water->getSurface()->setWind(breeze);
+    water->getSurface()->setWaveModel(WaterSurface::WAVES_WIND);
+    return water;
+}
+}
+
+// The wind's waves: the height the GPU reads from the cascades' textures at each shaded point is
+// the CPU height query's there (the same texels, filtered the same way). Looking down from 3 m,
+// a pixel spans about a centimetre, so the fragments read the finest levels; the query reads
+// level 0 (what the shortest waves' mip blur leaves is under a millimetre of height).
+TEST(RenderSurface, TheWindsWavesDrawnAreTheHeightQuerys)
+{
+    Harness h(256, 256);
+    REQUIRE_GL(h);
+    const double t = 7.25;
+    osg::ref_ptr<WaterNode> water = windWater();
+    water->setDebugOutput(DEBUG_SURFACE);
+    h.setScene(water.get());
+    h.lookAt(osg::Vec3d(3, -2, 3.0), osg::Vec3d(4, 0, 0));
+    h.frame(t);
+    osg::ref_ptr<osg::Image> img = h.readColor();
+    ASSERT_TRUE(img.valid());
+    double sum2 = 0.0, spread2 = 0.0;
+    size_t n = 0;
+    for (int y = 0; y < img->t(); ++y)
+        for (int x = 0; x < img->s(); ++x) {
+            const float* p = pixel(img.get(), x, y);
+            if (p[3] != 2.0f) continue;
+            const double cpu = water->getSurface()->height(p[0], p[1], t);
+            sum2 += (p[2] - cpu) * (p[2] - cpu);
+            spread2 += cpu * cpu;
+            ++n;
+        }
+    ASSERT_GT(n, 256u * 200u);
+    const double rms = std::sqrt(sum2 / n), waves = std::sqrt(spread2 / n);
+    RecordProperty("rms_mm", std::to_string(1e3 * rms));
+    // the waves are there (a few centimetres of height), and the two agree within 1 mm RMS
+    EXPECT_GT(waves, 5e-3);
+    EXPECT_LT(rms, 1e-3) << "metres, against waves of " << waves << " m RMS";
+}

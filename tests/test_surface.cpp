@@ -1,7 +1,9 @@
 // WaterSurface: the thesis's grid, analytic normals, amplitude, huge times.
 #include <osgWater/WaterSurface>
+#include "surface/WaveCascades.h"
 #include <gtest/gtest.h>
 #include <cmath>
+#include <limits>
 
 using namespace osgWater;
 
@@ -324,4 +326,82 @@ TEST(Surface, WavesSnappedToATileRepeatOverItAndStayClose)
     const Wave s = WaterSurface::wavesSnappedToTile({ longWave }, tile)[0];
     EXPECT_NEAR(s.wavelength, 8.0f, 1e-5f);
     EXPECT_NEAR(s.direction.x(), 1.0f, 1e-6f);
+}
+
+// The wind's waves: the surface answers from the cascades of its wind over its own square (the
+// fetch, by default, the water's size), about its level; a still wind is flat water; bad winds
+// are clamped.
+TEST(Surface, TheWindsWavesAreTheCascadesOfItsWindOverItsSquare)
+{
+    osg::ref_ptr<WaterSurface> s = new WaterSurface;
+    s->setSize(140.0f);
+    s->setLevel(1.5);
+    WindWaves wind;
+    wind.speed = 6.0f;
+    wind.direction.set(0.0f, 2.0f); // normalised
+    wind.seed = 4;
+    s->setWind(wind);
+    EXPECT_EQ(s->getWind().direction, osg::Vec2(0.0f, 1.0f));
+    EXPECT_EQ(s->getWaveModel(), WaterSurface::WAVES_SUM); // the sum stays the default
+    const double sumHeight = s->height(3.0, 4.0, 2.0);
+    s->setWaveModel(WaterSurface::WAVES_WIND);
+    // the spectrum's own: a 6 m/s wind towards +y over 140 m
+    WaveCascades::Params p;
+    p.sea.windSpeed = 6.0;
+    p.sea.fetch = 140.0;
+    p.sea.windDirection = 0.5 * osg::PI;
+    p.extent = 140.0;
+    p.seed = 4;
+    WaveCascades cascades(p);
+    double spread = 0.0;
+    for (double t : { 2.0, 2.5, 1.0e6 })
+        for (double x : { -60.0, 3.0, 41.7 }) {
+            cascades.update(t);
+            EXPECT_NEAR(s->height(x, 4.0, t), 1.5 + cascades.height(x, 4.0), 1e-6) << x << " at " << t;
+            const osg::Vec3d n = s->normal(x, 4.0, t), m = cascades.normal(x, 4.0);
+            EXPECT_NEAR((n - m).length(), 0.0, 1e-6);
+            spread = std::max(spread, std::fabs(s->height(x, 4.0, t) - 1.5));
+        }
+    EXPECT_NE(s->height(3.0, 4.0, 2.0), sumHeight);
+    EXPECT_GT(spread, 1e-3); // waves, not a flat sheet
+    // the bounds: six standard deviations of the bins' heights and slopes
+    EXPECT_NEAR(s->getMaxAmplitude(), 6.0 * std::sqrt(cascades.binVariance()), 1e-6);
+    EXPECT_NEAR(s->getMaxSlope(), 6.0 * std::sqrt(cascades.binSlopeVariance()), 1e-6);
+    EXPECT_NEAR(s->getMaxPhaseSpeed(), cascades.maxPhaseSpeed(), 1e-9);
+    EXPECT_GT(s->getMaxAmplitude(), spread);
+
+    // no wind: flat water at the level, nothing to clear
+    wind.speed = 0.0f;
+    s->setWind(wind);
+    EXPECT_EQ(s->height(3.0, 4.0, 2.0), 1.5);
+    EXPECT_EQ(s->getMaxAmplitude(), 0.0f);
+}
+
+TEST(Surface, BadWindsAreClamped)
+{
+    osg::ref_ptr<WaterSurface> s = new WaterSurface;
+    WindWaves w;
+    w.speed = std::nanf("");
+    w.direction.set(0.0f, 0.0f);
+    w.fetch = -3.0f;
+    w.depth = std::numeric_limits<float>::infinity();
+    w.spread = 7.0f;
+    w.swell = std::nanf("");
+    s->setWind(w);
+    const WindWaves& used = s->getWind();
+    EXPECT_EQ(used.speed, 5.0f);
+    EXPECT_EQ(used.direction, osg::Vec2(1.0f, 0.0f));
+    EXPECT_EQ(used.fetch, 0.0f);
+    EXPECT_EQ(used.depth, 1.0e5f);
+    EXPECT_EQ(used.spread, 1.0f);
+    EXPECT_EQ(used.swell, 0.0f);
+    w = WindWaves();
+    w.speed = 1.0e6f;
+    s->setWind(w);
+    EXPECT_EQ(s->getWind().speed, 40.0f);
+    s->setWaveModel(WaterSurface::WaveModel(7));
+    EXPECT_EQ(s->getWaveModel(), WaterSurface::WAVES_SUM);
+    s->setWaveModel(WaterSurface::WAVES_WIND);
+    EXPECT_TRUE(std::isfinite(s->height(1.0, 2.0, 3.0)));
+    EXPECT_EQ(s->height(std::nan(""), 2.0, 3.0), 0.0);
 }

@@ -51,6 +51,7 @@ void LakeOptions::describe(osg::ApplicationUsage& u)
     u.addCommandLineOption("--lookup <one-step|iterative|plane>", "Refraction lookup technique");
     u.addCommandLineOption("--reflection-lookup <search|offset|plane>", "Reflection lookup technique (default search)");
     u.addCommandLineOption("--calm", "Flat water: the scene's waves off");
+    u.addCommandLineOption("--wind <m/s>", "Waves raised by a wind of this speed over the lake (its fetch the lake's size) instead of the scene's sum of waves");
     u.addCommandLineOption("--mesh <rings|grid>", "The surface's mesh: rings around the eye (default) or the thesis's uniform grid");
     u.addCommandLineOption("--planes <height> <depth>", "Plane-offset lookups' planes, metres from the level (0: from the scene)");
     u.addCommandLineOption("--steps <n>", "Candidates of the iterative search (1-8)");
@@ -155,6 +156,10 @@ bool LakeOptions::read(osg::ArgumentParser& args)
     if (args.read("--supersample")) _setters.push_back([](WaterSettings& w) { w.setCausticsSupersampling(true); });
     args.read("--caustics-tile", causticsTile);
     if (args.read("--calm")) calm = true;
+    if (args.read("--wind", wind) && !(wind >= 0.0 && wind <= 40.0)) {
+        std::cerr << "error: --wind takes a speed in m/s, 0 to 40" << std::endl;
+        return false;
+    }
     if (args.read("--mesh", mesh)) {
         osgWater::WaterSurface::MeshLayout layout;
         if (!osgWater::WaterSurface::meshLayoutFromName(mesh, layout)) {
@@ -190,6 +195,12 @@ void LakeOptions::apply(osgWater::WaterNode& water) const
     else s.setWaterModel(WaterSettings::WATER_THESIS);
     for (const auto& set : _setters) set(s);
     if (calm) water.getSurface()->setWaves({});
+    if (wind >= 0.0) {
+        osgWater::WindWaves w = water.getSurface()->getWind();
+        w.speed = float(wind);
+        water.getSurface()->setWind(w);
+        water.getSurface()->setWaveModel(osgWater::WaterSurface::WAVES_WIND);
+    }
     osgWater::WaterSurface::MeshLayout layout;
     if (osgWater::WaterSurface::meshLayoutFromName(mesh, layout)) water.getSurface()->setMeshLayout(layout);
     if (causticsTile > 0.0) {

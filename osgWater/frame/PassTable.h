@@ -49,6 +49,7 @@ enum TextureUnit {
     UNIT_REFLECTED_SUN_DEPTH = 8,
     UNIT_REFLECTION_DEPTH = 9, //!< the reflection pass's depth (the water program's mirror search)
     UNIT_SUN_SHADE = 10,       //!< the sun's shade map (the scene program's procedural caustics)
+    UNIT_WAVES = 11,           //!< the wind's wave cascades (every program that reads the waves)
     UNIT_PASS_INPUT = 0        //!< a screen pass's input (photons to splat, highlight to blur, glow to add)
 };
 

@@ -1,4 +1,5 @@
 #include "frame/WaterStateSets.h"
+#include "surface/SpectralWaves.h"
 #include <osgWater/WaterSettings>
 #include <osgWater/WaterSurface>
 #include "shaders/Shaders.h"
@@ -81,8 +82,14 @@ WaterStateSets::WaterStateSets() : _programs(new ProgramLibrary)
                                                                         float(halo.haloLevel))));
     // the refraction pass's virtual vertices and the procedural caustics made per pixel follow the
     // waves: the scene program shares their inputs
+    // the wind's waves: their cascades' texture and scales (set when the surface has them)
+    _water->addUniform(new osg::Uniform("osgWater_WaveCascades", int(UNIT_WAVES)));
+    _water->addUniform(new osg::Uniform(osg::Uniform::FLOAT_VEC4, "osgWater_Cascades", WaveCascades::CASCADES));
+    _water->addUniform(new osg::Uniform("osgWater_CascadeCount", 0));
+    _water->addUniform(new osg::Uniform("osgWater_CascadeTexels", 1.0f));
     for (const char* u : { "osgWater_Waves", "osgWater_WavePhases", "osgWater_WaveCount", "osgWater_Level", "osgWater_IOR",
-                           "osgWater_PhotonExtinction", "osgWater_FresnelQ", "osgWater_SunHalo" })
+                           "osgWater_PhotonExtinction", "osgWater_FresnelQ", "osgWater_SunHalo", "osgWater_WaveCascades",
+                           "osgWater_Cascades", "osgWater_CascadeCount", "osgWater_CascadeTexels" })
         _scene->addUniform(_water->getUniform(u));
     _scene->addUniform(new osg::Uniform("osgWater_MembraneCell", 1.0f));
     _water->addUniform(new osg::Uniform("osgWater_LookupPlanes", osg::Vec2f(1.0f, 1.0f)));
@@ -133,6 +140,7 @@ void WaterStateSets::applySettings(const WaterSettings& s, const WaterSurface& s
         wu->setElement(i, v);
     }
     w->getUniform("osgWater_WaveCount")->set(int(waves.size()));
+    applyWind(surface.getSpectralWaves());
 
     const osg::Vec2f half(0.5f * surface.getSize(), 0.5f * surface.getSize());
     const osg::Vec2f lo = surface.getCenter() - half, hi = surface.getCenter() + half;
@@ -151,8 +159,24 @@ void WaterStateSets::applySettings(const WaterSettings& s, const WaterSurface& s
     else w->setDefine("OSGWATER_DEBUG", std::to_string(int(debug)));
 }
 
+void WaterStateSets::applyWind(detail::SpectralWaves* wind)
+{
+    // every program that reads the waves (the water's, the scene's virtual vertices and procedural
+    // caustics, the photons') lies under one of the two state sets
+    for (osg::StateSet* ss : { _water.get(), _scene.get() }) {
+        setDefineIf(ss, "OSGWATER_WIND", wind != nullptr);
+        if (wind) ss->setTextureAttribute(UNIT_WAVES, wind->texture());
+        else ss->removeTextureAttribute(UNIT_WAVES, osg::StateAttribute::TEXTURE);
+    }
+    osg::Uniform* scales = _water->getUniform("osgWater_Cascades");
+    for (unsigned int c = 0; c < WaveCascades::CASCADES; ++c) scales->setElement(c, wind ? wind->cascadeScale(c) : osg::Vec4f());
+    _water->getUniform("osgWater_CascadeCount")->set(wind ? int(wind->cascadeCount()) : 0);
+    _water->getUniform("osgWater_CascadeTexels")->set(wind ? float(wind->textureSize()) : 1.0f);
+}
+
 void WaterStateSets::applyTime(const WaterSurface& surface, double t)
 {
+    if (detail::SpectralWaves* wind = surface.getSpectralWaves()) wind->applyTime(t);
     osg::Uniform* pu = _water->getUniform("osgWater_WavePhases");
     for (unsigned int i = 0; i < WaterSurface::MAX_WAVES; ++i)
         pu->setElement(i, surface.wrappedPhase(i, t));

@@ -12,6 +12,7 @@ namespace osgWater {
 
 class WaterSettings;
 class WaterSurface;
+namespace detail { class SpectralWaves; }
 
 
 //! The StateSets shared by every view: the scene program for the WaterNode's children, the water
@@ -33,7 +34,7 @@ public:
 
     //! Uniforms and defines from settings and surface (call when either changed).
     void applySettings(const WaterSettings& settings, const WaterSurface& surface, DebugOutput debug);
-    //! Wave phases for simulation time t.
+    //! Wave phases (the wind's cascades) for simulation time t.
     void applyTime(const WaterSurface& surface, double t);
     //! The plane-offset lookups' planes: height above the level for the reflection, depth below it
     //! for the refraction, metres.
@@ -45,6 +46,9 @@ public:
     void releaseGLObjects(osg::State* state) const;
 
 private:
+    //! The wind's texture, scales and define, or none (the sum of sines).
+    void applyWind(detail::SpectralWaves* wind);
+
     osg::ref_ptr<ProgramLibrary> _programs; // first: the state sets below take theirs from it
     osg::ref_ptr<osg::StateSet> _scene, _water, _guest, _surfaceBin;
 };

@@ -1,5 +1,6 @@
 #include <osgWater/WaterSurface>
 #include "settings/Clamp.h"
+#include "surface/SpectralWaves.h"
 #include <osg/Notify>
 #include <algorithm>
 #include <cmath>
@@ -91,13 +92,15 @@ std::vector<Wave> osgWater::defaultWaves()
 
 WaterSurface::WaterSurface()
     : _level(0.0), _size(100.0f), _center(0.0f, 0.0f), _resolution(49), _layout(MESH_EYE_RINGS), _waves(defaultWaves()),
-      _uniformMesh(new osg::Geode), _revision(0), _stale(true), _waveSlope(slopeBound(_waves))
+      _model(WAVES_SUM), _uniformMesh(new osg::Geode), _revision(0), _stale(true), _waveSlope(slopeBound(_waves))
 {
 }
 
+WaterSurface::~WaterSurface() = default;
+
 WaterSurface::WaterSurface(const WaterSurface& o, const osg::CopyOp& copyop)
     : osg::Geode(o, copyop), _level(o._level), _size(o._size), _center(o._center), _resolution(o._resolution),
-      _layout(o._layout), _waves(o._waves), _userMesh(o._userMesh), _uniformMesh(new osg::Geode), _revision(0), _stale(true),
+      _layout(o._layout), _waves(o._waves), _model(o._model), _wind(o._wind), _userMesh(o._userMesh), _uniformMesh(new osg::Geode), _revision(0), _stale(true),
       _waveSlope(o._waveSlope)
 {
 }
@@ -118,6 +121,7 @@ void WaterSurface::setSize(float size)
     if (used != size)
         OSG_WARN << "osgWater::WaterSurface: size " << size << " out of (0.01, 1e7], using " << used << std::endl;
     _size = used;
+    respectrum(); // the wind's cascades are chosen for the water's size (and its fetch by default)
     rebuild();
 }
 
@@ -228,6 +232,79 @@ void WaterSurface::setWaves(const std::vector<Wave>& waves)
     rewaved();
 }
 
+void WaterSurface::setWaveModel(WaveModel model)
+{
+    if (model != WAVES_SUM && model != WAVES_WIND) {
+        OSG_WARN << "osgWater::WaterSurface: waveModel " << int(model) << " names no model, using WAVES_SUM" << std::endl;
+        model = WAVES_SUM;
+    }
+    _model = model;
+    rewaved();
+}
+
+const char* WaterSurface::waveModelName(WaveModel model)
+{
+    return model == WAVES_SUM ? "sum" : model == WAVES_WIND ? "wind" : nullptr;
+}
+
+bool WaterSurface::waveModelFromName(const std::string& name, WaveModel& model)
+{
+    for (WaveModel m : { WAVES_SUM, WAVES_WIND })
+        if (name == waveModelName(m)) {
+            model = m;
+            return true;
+        }
+    return false;
+}
+
+void WaterSurface::setWind(const WindWaves& wind)
+{
+    const char* who = "osgWater::WaterSurface";
+    WindWaves w = wind;
+    // a gale is the strongest wind JONSWAP's fetch-limited fit describes; beyond, it is no lake
+    w.speed = detail::clampOr(who, "wind speed", w.speed, 0.0f, 40.0f, 5.0f);
+    w.fetch = detail::clampOr(who, "wind fetch", w.fetch, 0.0f, 1.0e7f, 0.0f);
+    w.depth = detail::clampOr(who, "wind depth", w.depth, 0.0f, 1.0e5f, 0.0f);
+    w.spread = detail::clampOr(who, "wind spread", w.spread, 0.0f, 1.0f, 0.0f);
+    w.swell = detail::clampOr(who, "wind swell", w.swell, 0.0f, 1.0f, 0.0f);
+    const double len = std::hypot(double(w.direction.x()), double(w.direction.y()));
+    if (!std::isfinite(len) || len < 1e-6) {
+        OSG_WARN << who << ": wind direction (" << w.direction.x() << " " << w.direction.y()
+                 << ") is not a direction, using (1 0)" << std::endl;
+        w.direction.set(1.0f, 0.0f);
+    } else if (std::fabs(len - 1.0) > 1.0e-6) {
+        w.direction.set(float(w.direction.x() / len), float(w.direction.y() / len));
+    }
+    _wind = w;
+    respectrum();
+    rewaved();
+}
+
+void WaterSurface::respectrum()
+{
+    std::lock_guard<std::mutex> lock(_spectralMaking);
+    _spectral = nullptr;
+}
+
+detail::SpectralWaves* WaterSurface::getSpectralWaves() const
+{
+    if (_model != WAVES_WIND || !usesGrid()) return nullptr;
+    std::lock_guard<std::mutex> lock(_spectralMaking);
+    if (!_spectral.valid()) {
+        WaveCascades::Params p;
+        p.sea.windSpeed = _wind.speed;
+        p.sea.fetch = _wind.fetch > 0.0f ? _wind.fetch : _size;
+        p.sea.depth = _wind.depth > 0.0f ? _wind.depth : spectrum::kDeep;
+        p.sea.windDirection = std::atan2(double(_wind.direction.y()), double(_wind.direction.x()));
+        p.sea.spread = _wind.spread;
+        p.sea.swell = _wind.swell;
+        p.extent = _size;
+        p.seed = _wind.seed;
+        _spectral = new detail::SpectralWaves(p);
+    }
+    return _spectral.get();
+}
+
 void WaterSurface::setMesh(osg::Geometry* mesh)
 {
     const std::string problem = mesh ? meshProblem(*mesh) : std::string();
@@ -241,6 +318,7 @@ void WaterSurface::setMesh(osg::Geometry* mesh)
 
 double WaterSurface::getMaxPhaseSpeed() const
 {
+    if (const detail::SpectralWaves* wind = getSpectralWaves()) return wind->maxPhaseSpeed();
     double c = 0.0;
     if (usesGrid())
         for (const Wave& w : _waves)
@@ -248,7 +326,11 @@ double WaterSurface::getMaxPhaseSpeed() const
     return c;
 }
 
-double WaterSurface::getMaxSlope() const { return usesGrid() ? _waveSlope : 1.0; }
+double WaterSurface::getMaxSlope() const
+{
+    if (const detail::SpectralWaves* wind = getSpectralWaves()) return wind->slopeBound();
+    return usesGrid() ? _waveSlope : 1.0;
+}
 
 double WaterSurface::slopeBound(const std::vector<Wave>& waves)
 {
@@ -277,6 +359,7 @@ float WaterSurface::getMaxAmplitude() const
         if (!bb.valid()) return 0.0f;
         return float(std::max(std::fabs(bb.zMax() - _level), std::fabs(bb.zMin() - _level)));
     }
+    if (const detail::SpectralWaves* wind = getSpectralWaves()) return float(wind->heightBound());
     float a = 0.0f;
     for (const Wave& w : _waves) a += w.amplitude;
     return a;
@@ -294,6 +377,7 @@ float WaterSurface::wrappedPhase(unsigned int i, double t) const
 
 double WaterSurface::height(double x, double y, double t) const
 {
+    if (const detail::SpectralWaves* wind = getSpectralWaves()) return _level + wind->height(x, y, t);
     double h = _level;
     for (unsigned int i = 0; i < _waves.size(); ++i) {
         const Wave& w = _waves[i];
@@ -305,6 +389,7 @@ double WaterSurface::height(double x, double y, double t) const
 
 osg::Vec3d WaterSurface::normal(double x, double y, double t) const
 {
+    if (const detail::SpectralWaves* wind = getSpectralWaves()) return wind->normal(x, y, t);
     double hx = 0.0, hy = 0.0;
     for (unsigned int i = 0; i < _waves.size(); ++i) {
         const Wave& w = _waves[i];
@@ -355,13 +440,15 @@ bool WaterSurface::intersect(const osg::Vec3d& start, const osg::Vec3d& end, dou
         const osg::Vec3d p = start + d * s;
         return p.z() - (usesGrid() ? height(p.x(), p.y(), t) : _level);
     };
-    double shortest = 1e30;
-    for (const Wave& w : _waves) shortest = std::min(shortest, double(w.wavelength));
+    const detail::SpectralWaves* wind = getSpectralWaves();
+    double shortest = wind ? wind->shortestWave() : 1e30;
+    if (!wind)
+        for (const Wave& w : _waves) shortest = std::min(shortest, double(w.wavelength));
     const double dxy = osg::Vec2d(d.x(), d.y()).length();
     // steps of at least a sixteenth of the shortest wave, longer where the segment is far from the
     // surface: its height above it changes by at most |dz| + slope |dxy| per unit of s, so a step
     // of (height / that) cannot pass a crossing
-    const bool waves = usesGrid() && !_waves.empty();
+    const bool waves = usesGrid() && (wind ? wind->heightBound() > 0.0 : !_waves.empty());
     const double rate = std::fabs(d.z()) + (waves ? getMaxSlope() : 0.0) * dxy;
     // (never more than 1e5 of the shortest steps over the whole segment, as a huge water may ask)
     const double minStep = waves && dxy > 0.0 ? std::max((shortest / 16.0) / dxy, (s1 - s0) * 1.0e-5) : (s1 - s0);

@@ -164,7 +164,7 @@ double WaveCascades::bandVariance(const spectrum::WindSea& sea, const std::vecto
 }
 
 WaveCascades::WaveCascades(const Params& params)
-    : _params(params), _time(0.0), _binVariance(0.0), _plans(new Plans)
+    : _params(params), _time(0.0), _binVariance(0.0), _binSlopeVariance(0.0), _maxPhaseSpeed(0.0), _plans(new Plans)
 {
     unsigned int n = 16;
     while (n < std::min(params.size, 1024u)) n *= 2;
@@ -213,6 +213,8 @@ WaveCascades::WaveCascades(const Params& params)
                 bin.omega = spectrum::angularFrequency(std::hypot(m * dk, l * dk), _params.sea.depth);
                 cascade.bins.push_back(bin);
                 _binVariance += spectrumAt[i];
+                _binSlopeVariance += spectrumAt[i] * double(bin.k) * bin.k;
+                if (bin.k > 0.0f) _maxPhaseSpeed = std::max(_maxPhaseSpeed, bin.omega / bin.k);
             }
         _cascades.push_back(std::move(cascade));
     }

@@ -89,6 +89,10 @@ public:
 
     //! The variance the bins hold: sum of S(k) dk^2 over every cascade's bins (m^2).
     double binVariance() const { return _binVariance; }
+    //! The slopes' variance the bins hold, |grad h|^2 on average: sum of k^2 S(k) dk^2.
+    double binSlopeVariance() const { return _binSlopeVariance; }
+    //! The fastest phase speed omega / k of any bin (m/s): the longest wave's. 0 without bins.
+    double maxPhaseSpeed() const { return _maxPhaseSpeed; }
     //! The spectrum's integral over the bands, sum of int S(k) d^2k (m^2).
     static double bandVariance(const spectrum::WindSea& sea, const std::vector<CascadeBand>& bands);
 
@@ -112,7 +116,7 @@ private:
     std::vector<CascadeBand> _bands;
     std::vector<Cascade> _cascades;
     double _time;
-    double _binVariance;
+    double _binVariance, _binSlopeVariance, _maxPhaseSpeed;
     struct Plans;
     std::unique_ptr<Plans> _plans;
 };

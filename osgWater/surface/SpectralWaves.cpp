@@ -1,0 +1,165 @@
+#include "surface/SpectralWaves.h"
+#include <osg/GLExtensions>
+#include <osg/State>
+#include <algorithm>
+#include <cmath>
+
+using namespace osgWater;
+using namespace osgWater::detail;
+
+namespace {
+const unsigned int kChannels = 4; // h, dh/dx, dh/dy, 0
+
+// Uploads the layers' every mip level, again each time an image changed. OSG's own path for
+// mipmapped array images re-specifies the levels of the immutable storage it made (a GL error),
+// and regenerates no levels on a subload.
+class CascadeUpload : public osg::Texture2DArray::SubloadCallback
+{
+public:
+    explicit CascadeUpload(const std::vector<osg::ref_ptr<osg::Image>>& images) : _images(images) {}
+
+    void load(const osg::Texture2DArray& texture, osg::State& state) const override
+    {
+        const osg::GLExtensions* gl = state.get<osg::GLExtensions>();
+        int side = _images.front()->s();
+        for (int level = 0; side >= 1; ++level, side /= 2)
+            gl->glTexImage3D(GL_TEXTURE_2D_ARRAY_EXT, level, GL_RGBA32F_ARB, side, side, GLsizei(_images.size()), 0, GL_RGBA,
+                             GL_FLOAT, nullptr);
+        _uploaded[state.getContextID()] = ~0u;
+        subload(texture, state);
+    }
+
+    void subload(const osg::Texture2DArray&, osg::State& state) const override
+    {
+        unsigned int revision = 0;
+        for (const osg::ref_ptr<osg::Image>& image : _images) revision += image->getModifiedCount();
+        unsigned int& uploaded = _uploaded[state.getContextID()];
+        if (uploaded == revision) return;
+        const osg::GLExtensions* gl = state.get<osg::GLExtensions>();
+        glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+        glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
+        for (size_t layer = 0; layer < _images.size(); ++layer) {
+            const osg::Image& image = *_images[layer];
+            int side = image.s();
+            for (unsigned int level = 0; side >= 1 && level < image.getNumMipmapLevels(); ++level, side /= 2)
+                gl->glTexSubImage3D(GL_TEXTURE_2D_ARRAY_EXT, GLint(level), 0, 0, GLint(layer), side, side, 1, GL_RGBA, GL_FLOAT,
+                                    image.getMipmapData(level));
+        }
+        uploaded = revision;
+    }
+
+private:
+    std::vector<osg::ref_ptr<osg::Image>> _images;
+    mutable osg::buffered_value<unsigned int> _uploaded;
+};
+}
+
+SpectralWaves::SpectralWaves(const WaveCascades::Params& params)
+    : _cascades(params), _heightBound(0.0), _slopeBound(0.0), _texture(new osg::Texture2DArray)
+{
+    _heightBound = HEIGHT_SIGMAS * std::sqrt(_cascades.binVariance());
+    _slopeBound = HEIGHT_SIGMAS * std::sqrt(_cascades.binSlopeVariance());
+    for (const CascadeBand& b : _cascades.bands())
+        _cascadeBound.push_back(HEIGHT_SIGMAS * std::sqrt(WaveCascades::bandVariance(params.sea, { b })));
+
+    const unsigned int n = _cascades.params().size, layers = std::max(cascadeCount(), 1u);
+    _texture->setTextureSize(int(n), int(n), int(layers));
+    _texture->setInternalFormat(GL_RGBA32F_ARB);
+    _texture->setSourceFormat(GL_RGBA);
+    _texture->setSourceType(GL_FLOAT);
+    _texture->setFilter(osg::Texture::MIN_FILTER, osg::Texture::LINEAR_MIPMAP_LINEAR);
+    _texture->setFilter(osg::Texture::MAG_FILTER, osg::Texture::LINEAR);
+    for (osg::Texture::WrapParameter w : { osg::Texture::WRAP_S, osg::Texture::WRAP_T })
+        _texture->setWrap(w, osg::Texture::REPEAT); // each cascade is a periodic tile
+    _texture->setResizeNonPowerOfTwoHint(false);
+    _texture->setDataVariance(osg::Object::DYNAMIC);
+    // every level down to 1 x 1, in one block per layer
+    osg::Image::MipmapDataType offsets;
+    size_t texels = size_t(n) * n;
+    for (unsigned int side = n / 2; side >= 1; side /= 2) {
+        offsets.push_back(unsigned(texels * kChannels * sizeof(float)));
+        texels += size_t(side) * side;
+    }
+    for (unsigned int layer = 0; layer < layers; ++layer) {
+        osg::ref_ptr<osg::Image> image = new osg::Image;
+        float* data = new float[texels * kChannels]();
+        image->setImage(int(n), int(n), 1, GL_RGBA32F_ARB, GL_RGBA, GL_FLOAT, reinterpret_cast<unsigned char*>(data),
+                        osg::Image::USE_NEW_DELETE);
+        image->setMipmapLevels(offsets);
+        image->setDataVariance(osg::Object::DYNAMIC);
+        _images.push_back(image);
+    }
+    _texture->setSubloadCallback(new CascadeUpload(_images));
+    fill();
+}
+
+void SpectralWaves::at(double t) const
+{
+    if (!std::isfinite(t)) t = 0.0;
+    if (t != _cascades.time()) _cascades.update(t);
+}
+
+double SpectralWaves::height(double x, double y, double t) const
+{
+    std::lock_guard<std::mutex> guard(_lock);
+    at(t);
+    return _cascades.height(x, y);
+}
+
+osg::Vec3d SpectralWaves::normal(double x, double y, double t) const
+{
+    std::lock_guard<std::mutex> guard(_lock);
+    at(t);
+    return _cascades.normal(x, y);
+}
+
+void SpectralWaves::applyTime(double t)
+{
+    std::lock_guard<std::mutex> guard(_lock);
+    const double before = _cascades.time();
+    at(t);
+    if (_cascades.time() != before) fill();
+}
+
+void SpectralWaves::fill()
+{
+    const unsigned int n = _cascades.params().size;
+    for (unsigned int c = 0; c < cascadeCount(); ++c) {
+        float* level = reinterpret_cast<float*>(_images[c]->data());
+        const std::vector<WaveCascades::Texel>& texels = _cascades.texels(c);
+        for (size_t i = 0; i < texels.size(); ++i) {
+            level[kChannels * i + 0] = texels[i].displacement.z();
+            level[kChannels * i + 1] = texels[i].slope.x();
+            level[kChannels * i + 2] = texels[i].slope.y();
+            level[kChannels * i + 3] = 0.0f;
+        }
+        // each level the 2 x 2 average of the one above: texel i of level L covers texels
+        // 2^L i .. 2^L (i + 1) of level 0, as GL's mip levels do
+        for (unsigned int side = n / 2; side >= 1; side /= 2) {
+            float* next = level + size_t(2 * side) * (2 * side) * kChannels;
+            for (unsigned int y = 0; y < side; ++y)
+                for (unsigned int x = 0; x < side; ++x)
+                    for (unsigned int k = 0; k < kChannels; ++k) {
+                        const size_t row = size_t(2 * side) * kChannels;
+                        const float* a = level + (2 * y) * row + (2 * x) * kChannels + k;
+                        next[(size_t(y) * side + x) * kChannels + k] = 0.25f * (a[0] + a[kChannels] + a[row] + a[row + kChannels]);
+                    }
+            level = next;
+        }
+        _images[c]->dirty();
+    }
+}
+
+osg::Vec4f SpectralWaves::cascadeScale(unsigned int c) const
+{
+    if (c >= cascadeCount()) return osg::Vec4f();
+    const CascadeBand& b = _cascades.bands()[c];
+    return osg::Vec4f(float(1.0 / b.tile), float(_cascadeBound[c]), float(b.kHigh), 0.0f);
+}
+
+double SpectralWaves::shortestWave() const
+{
+    double k = 0.0;
+    for (const CascadeBand& b : _cascades.bands()) k = std::max(k, b.kHigh);
+    return k > 0.0 ? 2.0 * osg::PI / k : 1.0e30;
+}

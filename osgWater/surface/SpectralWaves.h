@@ -1,0 +1,61 @@
+/* osgWater - natural water for OpenSceneGraph */
+#ifndef OSGWATER_SPECTRALWAVES
+#define OSGWATER_SPECTRALWAVES 1
+
+#include "surface/WaveCascades.h"
+#include <osg/Referenced>
+#include <osg/Texture2DArray>
+#include <mutex>
+
+namespace osgWater { namespace detail {
+
+//! A WaterSurface's wind waves: the cascades, asked at any time, and the texture the shaders read
+//! them from (waves.glsl under OSGWATER_WIND). The CPU and the GPU sample the same texels the same
+//! way (bilinear, texel i's centre at the FFT's sample i), so the height query is the drawn surface.
+//!
+//! The texture is a 2D array, one layer per cascade, RGBA32F: the height and its slopes dh/dx,
+//! dh/dy, with mip levels averaged here (the averages of heights and of slopes are the height and
+//! the slopes of the averaged surface), so far water reads a filtered surface.
+class SpectralWaves : public osg::Referenced
+{
+public:
+    explicit SpectralWaves(const WaveCascades::Params& params);
+
+    //! The surface's height above its level and its unit normal over (x, y) at time t: the
+    //! cascades are brought to t when t differs from their last time (a few milliseconds).
+    double height(double x, double y, double t) const;
+    osg::Vec3d normal(double x, double y, double t) const;
+
+    //! The texture's texels made those of time t (once a frame, the frame's time).
+    void applyTime(double t);
+    osg::Texture2DArray* texture() const { return _texture.get(); }
+    //! Per cascade, what the shader needs: (1 / tile, the height bound, the band's top k, 0).
+    osg::Vec4f cascadeScale(unsigned int c) const;
+    unsigned int cascadeCount() const { return unsigned(_cascades.bands().size()); }
+    unsigned int textureSize() const { return _cascades.params().size; }
+
+    //! |h| stays below this (m): HEIGHT_SIGMAS standard deviations of the heights the bins hold
+    //! (a Gaussian field's extreme over a lake's worth of texels is about 4.5 of them).
+    double heightBound() const { return _heightBound; }
+    //! |grad h| stays below this: HEIGHT_SIGMAS standard deviations of the slopes.
+    double slopeBound() const { return _slopeBound; }
+    double maxPhaseSpeed() const { return _cascades.maxPhaseSpeed(); }
+    //! The shortest wave the cascades hold (m): the height query's stepping scale.
+    double shortestWave() const;
+    static constexpr double HEIGHT_SIGMAS = 6.0;
+
+private:
+    void at(double t) const; // under _lock
+    void fill(); // the texture's images from the cascades
+
+    mutable std::mutex _lock;
+    mutable WaveCascades _cascades;
+    std::vector<double> _cascadeBound;
+    double _heightBound, _slopeBound;
+    osg::ref_ptr<osg::Texture2DArray> _texture;
+    std::vector<osg::ref_ptr<osg::Image>> _images;
+};
+
+} }
+
+#endif
