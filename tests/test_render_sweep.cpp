@@ -85,6 +85,7 @@ struct Group {
     int textureSize, photonGrid, viewport;
     bool rotation, apparentEye, glow, reflection, refraction;
     DebugOutput debug;
+    float wind; // m/s: the wind's waves (one group in three), else < 0: the sum of sines
 };
 // ... cheap ones (uniforms, the camera, the waves) per configuration.
 struct Config {
@@ -141,6 +142,10 @@ std::vector<Group> groups()
         x.reflection = i % 19 != 5;
         x.refraction = i % 23 != 7;
         x.debug = pick(debug, i / 7);
+        // the wind's waves: still air, a breeze, a fresh wind, a gale (the cascades are made per
+        // group; each configuration moves them to its time)
+        const float winds[] = { 0.0f, 2.0f, 5.0f, 12.0f, 40.0f };
+        x.wind = i % 3 == 2 ? pick(winds, i / 3) : -1.0f;
         g.push_back(x);
     }
     return g;
@@ -187,7 +192,8 @@ std::string describe(const Group& g, const Config& c)
       << ", fresnel " << g.fresnel << ", underwater " << g.underwater << ", gather " << g.gather << (g.areaMesh ? " (mesh)" : "") << (g.procedural ? (g.perPixel ? " (procedural per pixel)" : " (procedural)") : "") << (g.reflective ? " (reflective)" : "") << (g.tile > 0.0f ? " (tiled)" : "") << (g.environment ? ", environment map" : "") << ", textures "
       << g.textureSize << ", photons " << g.photonGrid << ", viewport " << g.viewport << ", rotation " << g.rotation
       << (g.rotation && !g.apparentEye ? " (thesis)" : "")
-      << ", glow " << g.glow << ", debug " << g.debug << "; eye height " << c.eyeHeight << ", pitch " << c.pitch
+      << ", glow " << g.glow << ", debug " << g.debug << (g.wind >= 0.0f ? ", wind " + std::to_string(g.wind) + " m/s" : std::string())
+      << "; eye height " << c.eyeHeight << ", pitch " << c.pitch
       << ", yaw " << c.yaw << ", sun " << c.sunElevation << ", IOR " << c.ior << ", t " << c.time << ", amplitude "
       << c.amplitude << ", near " << c.nearPlane;
     return s.str();
@@ -223,6 +229,13 @@ void apply(WaterNode* water, const Group& g)
     s->setReflectionEnabled(g.reflection);
     s->setRefractionEnabled(g.refraction);
     water->setDebugOutput(g.debug);
+    if (g.wind >= 0.0f) {
+        WindWaves wind;
+        wind.speed = g.wind;
+        wind.direction.set(0.3f, 1.0f);
+        water->getSurface()->setWind(wind);
+    }
+    water->getSurface()->setWaveModel(g.wind >= 0.0f ? WaterSurface::WAVES_WIND : WaterSurface::WAVES_SUM);
 }
 
 void apply(Harness& h, WaterNode* water, const Group& g, const Config& c)

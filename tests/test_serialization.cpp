@@ -381,3 +381,53 @@ TEST(Serialization, TheBinarySeedsReadAsTheirTextTwins)
             << name;
     }
 }
+
+// The wind's waves are kept as the wind's own fields (not arrays of waves), in both formats
+TEST(Serialization, TheWindsWavesRoundTripAsTheirFields)
+{
+    osg::ref_ptr<WaterNode> w = new WaterNode;
+    WindWaves wind;
+    wind.speed = 7.25f;
+    wind.direction.set(0.6f, 0.8f);
+    wind.fetch = 1234.5f;
+    wind.depth = 3.5f;
+    wind.spread = 0.25f;
+    wind.swell = 0.5f;
+    wind.seed = 42;
+    w->getSurface()->setWind(wind);
+    w->getSurface()->setWaveModel(WaterSurface::WAVES_WIND);
+    for (const char* ext : { "osgt", "osgb" }) {
+        const std::string a = tmp(std::string("wind_a.") + ext), b = tmp(std::string("wind_b.") + ext);
+        ASSERT_TRUE(osgDB::writeNodeFile(*w, a));
+        osg::ref_ptr<WaterNode> r = readWater(a);
+        ASSERT_TRUE(r.valid()) << ext;
+        EXPECT_EQ(r->getSurface()->getWaveModel(), WaterSurface::WAVES_WIND) << ext;
+        EXPECT_TRUE(r->getSurface()->getWind() == wind) << ext;
+        ASSERT_TRUE(osgDB::writeNodeFile(*r, b));
+        EXPECT_EQ(slurp(a), slurp(b)) << ext;
+    }
+    const std::string text = slurp(tmp("wind_a.osgt"));
+    EXPECT_NE(text.find("WaveModel WAVES_WIND"), std::string::npos);
+    EXPECT_NE(text.find("Speed 7.25"), std::string::npos);
+    EXPECT_NE(text.find("Seed 42"), std::string::npos);
+}
+
+// A hand-written wind out of range is clamped with a warning, like every other field
+TEST(Serialization, AnAbsurdWindIsClampedWithAWarning)
+{
+    const std::string file = tmp("badwind.osgt");
+    spit(file, "#Ascii Scene\n#Version 161\n#Generator OpenSceneGraph 3.6.5\n\n"
+               "osgWater::WaterNode {\n  UniqueID 1\n  Surface TRUE {\n    osgWater::WaterSurface {\n      UniqueID 2\n"
+               "      WaveModel WAVES_WIND\n      Wind {\n        Speed 900\n        Direction 0 0\n        Fetch -5\n"
+               "        Depth 0\n        Spread 0\n        Swell 0\n        Seed 3\n      }\n    }\n  }\n}\n");
+    ScopedWarnCapture capture;
+    osg::ref_ptr<WaterNode> w = readWater(file);
+    ASSERT_TRUE(w.valid());
+    const WindWaves& wind = w->getSurface()->getWind();
+    EXPECT_EQ(wind.speed, 40.0f);
+    EXPECT_EQ(wind.direction, osg::Vec2(1.0f, 0.0f));
+    EXPECT_EQ(wind.fetch, 0.0f);
+    EXPECT_EQ(wind.seed, 3u);
+    EXPECT_NE(capture.str().find("wind speed"), std::string::npos);
+    EXPECT_TRUE(std::isfinite(w->getSurfaceHeightAt(1.0, 2.0, 3.0)));
+}

@@ -42,6 +42,43 @@ bool writeWaves(osgDB::OutputStream& os, const WaterSurface& s)
     return true;
 }
 
+bool checkWind(const WaterSurface& s) { return s.getWind() != WindWaves(); }
+
+// the wind as named fields in a block, each read into a default wind (setWind clamps)
+bool readWind(osgDB::InputStream& is, WaterSurface& s)
+{
+    WindWaves w;
+    is >> is.BEGIN_BRACKET;
+    is >> is.PROPERTY("Speed") >> w.speed;
+    is >> is.PROPERTY("Direction") >> w.direction;
+    is >> is.PROPERTY("Fetch") >> w.fetch;
+    is >> is.PROPERTY("Depth") >> w.depth;
+    is >> is.PROPERTY("Spread") >> w.spread;
+    is >> is.PROPERTY("Swell") >> w.swell;
+    is >> is.PROPERTY("Seed") >> w.seed;
+    is >> is.END_BRACKET;
+    s.setWind(w);
+    return true;
+}
+
+bool writeWind(osgDB::OutputStream& os, const WaterSurface& s)
+{
+    const WindWaves& w = s.getWind();
+    int digits = 6;
+    for (float f : { w.speed, w.fetch, w.depth, w.spread, w.swell }) digits = std::max(digits, detail::digitsFor(f));
+    digits = std::max(digits, detail::digitsFor(w.direction));
+    os << detail::setPrecision(digits) << os.BEGIN_BRACKET << std::endl;
+    os << os.PROPERTY("Speed") << w.speed << std::endl;
+    os << os.PROPERTY("Direction") << w.direction << std::endl;
+    os << os.PROPERTY("Fetch") << w.fetch << std::endl;
+    os << os.PROPERTY("Depth") << w.depth << std::endl;
+    os << os.PROPERTY("Spread") << w.spread << std::endl;
+    os << os.PROPERTY("Swell") << w.swell << std::endl;
+    os << os.PROPERTY("Seed") << w.seed << std::endl;
+    os << os.END_BRACKET << detail::restorePrecision << std::endl;
+    return true;
+}
+
 }
 
 REGISTER_OBJECT_WRAPPER(osgWater_WaterSurface, new osgWater::WaterSurface, osgWater::WaterSurface,
@@ -57,5 +94,10 @@ REGISTER_OBJECT_WRAPPER(osgWater_WaterSurface, new osgWater::WaterSurface, osgWa
     END_ENUM_SERIALIZER();
     ADD_USER_SERIALIZER(Waves);
     ADD_OBJECT_SERIALIZER(Mesh, osg::Geometry, NULL);
+    BEGIN_ENUM_SERIALIZER(WaveModel, WAVES_SUM);
+        ADD_ENUM_VALUE(WAVES_SUM);
+        ADD_ENUM_VALUE(WAVES_WIND);
+    END_ENUM_SERIALIZER();
+    ADD_USER_SERIALIZER(Wind);
 }
 
