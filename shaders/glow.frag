@@ -15,6 +15,9 @@ in vec3 vMeshNormal;
 void main()
 {
 #ifdef OSGWATER_GRID
+#ifdef OSGWATER_WIND
+    waterFootprint = max(length(dFdx(vLocal.xy)), length(dFdy(vLocal.xy))); // the cascades filtered as the view's are
+#endif
     vec3 N = waterNormal(vLocal.xy);
 #else
     float l2 = dot(vMeshNormal, vMeshNormal);

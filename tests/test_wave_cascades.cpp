@@ -97,7 +97,10 @@ TEST(WaveCascades, EveryTexelIsTheDirectSumOverItsCascadesBins)
     std::mt19937 engine(3);
     for (double t : { 0.0, 1.0e5 + 0.37 }) { // a day on, omega t far beyond 2 pi: no precision lost
         w.update(t);
+        unsigned int held = 0;
         for (unsigned int c = 0; c < w.bands().size(); ++c) {
+            if (!w.holdsWaves(c)) continue; // flat (below)
+            ++held;
             const double tile = w.bands()[c].tile;
             double scale = 0.0;
             for (const WaveCascades::Texel& texel : w.texels(c)) scale = std::max(scale, double(std::fabs(texel.displacement.z())));
@@ -113,7 +116,20 @@ TEST(WaveCascades, EveryTexelIsTheDirectSumOverItsCascadesBins)
                     EXPECT_NEAR(fft.slope[f], direct.slope[f], 1e-4 * scale * w.bands()[c].kHigh) << "cascade " << c << " slope " << f;
             }
         }
+        EXPECT_GE(held, WaveCascades::CASCADES - 1);
     }
+}
+
+// A band the spectrum leaves nearly empty (a lake's waves longer than its first tile resolves) is
+// left flat and untransformed; the others hold the variance
+TEST(WaveCascades, ABandWithoutWavesIsLeftFlat)
+{
+    WaveCascades w(lakeBreeze());
+    w.update(2.0);
+    ASSERT_FALSE(w.holdsWaves(0)); // 5 m/s over 140 m: nothing longer than 2.7 m to speak of
+    for (const WaveCascades::Texel& t : w.texels(0)) ASSERT_EQ(t.displacement.z(), 0.0f);
+    for (unsigned int c = 1; c < w.bands().size(); ++c) EXPECT_TRUE(w.holdsWaves(c)) << c;
+    EXPECT_LT(WaveCascades::bandVariance(lakeBreeze().sea, { w.bands()[0] }), 1e-6 * w.binVariance());
 }
 
 TEST(WaveCascades, TheRealisedVarianceIsTheSpectrumsIntegral)

@@ -59,8 +59,11 @@ SpectralWaves::SpectralWaves(const WaveCascades::Params& params)
 {
     _heightBound = HEIGHT_SIGMAS * std::sqrt(_cascades.binVariance());
     _slopeBound = HEIGHT_SIGMAS * std::sqrt(_cascades.binSlopeVariance());
-    for (const CascadeBand& b : _cascades.bands())
-        _cascadeBound.push_back(HEIGHT_SIGMAS * std::sqrt(WaveCascades::bandVariance(params.sea, { b })));
+    for (unsigned int c = 0; c < _cascades.bands().size(); ++c)
+        if (_cascades.holdsWaves(c)) {
+            _layers.push_back(c);
+            _cascadeBound.push_back(HEIGHT_SIGMAS * std::sqrt(WaveCascades::bandVariance(params.sea, { _cascades.bands()[c] })));
+        }
 
     const unsigned int n = _cascades.params().size, layers = std::max(cascadeCount(), 1u);
     _texture->setTextureSize(int(n), int(n), int(layers));
@@ -124,9 +127,9 @@ void SpectralWaves::applyTime(double t)
 void SpectralWaves::fill()
 {
     const unsigned int n = _cascades.params().size;
-    for (unsigned int c = 0; c < cascadeCount(); ++c) {
-        float* level = reinterpret_cast<float*>(_images[c]->data());
-        const std::vector<WaveCascades::Texel>& texels = _cascades.texels(c);
+    for (unsigned int layer = 0; layer < cascadeCount(); ++layer) {
+        float* level = reinterpret_cast<float*>(_images[layer]->data());
+        const std::vector<WaveCascades::Texel>& texels = _cascades.texels(_layers[layer]);
         for (size_t i = 0; i < texels.size(); ++i) {
             level[kChannels * i + 0] = texels[i].displacement.z();
             level[kChannels * i + 1] = texels[i].slope.x();
@@ -146,20 +149,20 @@ void SpectralWaves::fill()
                     }
             level = next;
         }
-        _images[c]->dirty();
+        _images[layer]->dirty();
     }
 }
 
-osg::Vec4f SpectralWaves::cascadeScale(unsigned int c) const
+osg::Vec4f SpectralWaves::cascadeScale(unsigned int layer) const
 {
-    if (c >= cascadeCount()) return osg::Vec4f();
-    const CascadeBand& b = _cascades.bands()[c];
-    return osg::Vec4f(float(1.0 / b.tile), float(_cascadeBound[c]), float(b.kHigh), 0.0f);
+    if (layer >= cascadeCount()) return osg::Vec4f();
+    const CascadeBand& b = _cascades.bands()[_layers[layer]];
+    return osg::Vec4f(float(1.0 / b.tile), float(_cascadeBound[layer]), float(b.kHigh), 0.0f);
 }
 
 double SpectralWaves::shortestWave() const
 {
     double k = 0.0;
-    for (const CascadeBand& b : _cascades.bands()) k = std::max(k, b.kHigh);
+    for (unsigned int c : _layers) k = std::max(k, _cascades.bands()[c].kHigh);
     return k > 0.0 ? 2.0 * osg::PI / k : 1.0e30;
 }

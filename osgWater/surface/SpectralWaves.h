@@ -29,9 +29,10 @@ public:
     //! The texture's texels made those of time t (once a frame, the frame's time).
     void applyTime(double t);
     osg::Texture2DArray* texture() const { return _texture.get(); }
-    //! Per cascade, what the shader needs: (1 / tile, the height bound, the band's top k, 0).
-    osg::Vec4f cascadeScale(unsigned int c) const;
-    unsigned int cascadeCount() const { return unsigned(_cascades.bands().size()); }
+    //! Per layer of the texture (a cascade that holds waves), what the shader needs:
+    //! (1 / tile, the height bound, the band's top k, 0).
+    osg::Vec4f cascadeScale(unsigned int layer) const;
+    unsigned int cascadeCount() const { return unsigned(_layers.size()); }
     unsigned int textureSize() const { return _cascades.params().size; }
 
     //! |h| stays below this (m): HEIGHT_SIGMAS standard deviations of the heights the bins hold
@@ -50,6 +51,7 @@ private:
 
     mutable std::mutex _lock;
     mutable WaveCascades _cascades;
+    std::vector<unsigned int> _layers; // the cascades that hold waves, one texture layer each
     std::vector<double> _cascadeBound;
     double _heightBound, _slopeBound;
     osg::ref_ptr<osg::Texture2DArray> _texture;

@@ -14,6 +14,9 @@ namespace {
 const double kTwoPi = 2.0 * osg::PI;
 // how far a tile may shrink to keep its repeats apart from the other tiles'
 const double kSmallestTileScale = 0.8;
+// a cascade whose band holds less than this share of the variance is left flat (a millionth: a
+// thousandth of the height)
+const double kNegligibleShare = 1e-6;
 
 // FFTW's planner is not re-entrant and measuring a plan takes a while: one plan per size for the
 // process, made under a lock, executed in place on each surface's own (equally aligned) arrays.
@@ -177,10 +180,17 @@ WaveCascades::WaveCascades(const Params& params)
     const int half = int(n / 2);
     auto indexOf = [n](int m, int l) { return unsigned(((l + int(n)) % int(n)) * int(n) + (m + int(n)) % int(n)); };
     std::vector<std::complex<float>> h0(count);
+    const double total = bandVariance(_params.sea, _bands);
     for (size_t c = 0; c < _bands.size(); ++c) {
         Cascade cascade;
         cascade.band = _bands[c];
         cascade.texels.resize(count);
+        // a band the spectrum leaves (nearly) empty, as a lake's longest waves: no bins, no
+        // transforms, flat texels; nothing reads it
+        if (!(bandVariance(_params.sea, { cascade.band }) >= kNegligibleShare * total)) {
+            _cascades.push_back(std::move(cascade));
+            continue;
+        }
         const double dk = kTwoPi / cascade.band.tile;
         // Box-Muller on the standard engine: the same draws wherever the kit runs
         std::mt19937 engine(_params.seed * 7919u + unsigned(c) * 104729u + 1u);
@@ -231,6 +241,7 @@ void WaveCascades::update(double t)
 
 void WaveCascades::evaluate(Cascade& c, double t)
 {
+    if (c.bins.empty()) return; // flat, as made
     const size_t count = size_t(_params.size) * _params.size;
     const float chop = float(_params.choppiness);
     const int transforms = chop != 0.0f ? 3 : 2;
@@ -272,6 +283,7 @@ WaveCascades::Texel WaveCascades::sample(double x, double y) const
     Texel sum;
     const unsigned int n = _params.size;
     for (const Cascade& c : _cascades) {
+        if (c.bins.empty()) continue;
         const double fx = x / c.band.tile * n, fy = y / c.band.tile * n;
         const double ix = std::floor(fx), iy = std::floor(fy);
         const float wx = float(fx - ix), wy = float(fy - iy);

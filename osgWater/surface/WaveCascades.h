@@ -71,6 +71,9 @@ public:
 
     //! The texels of cascade c (size x size, row y major), as of the last update.
     const std::vector<Texel>& texels(unsigned int c) const { return _cascades[c].texels; }
+    //! Whether cascade c holds waves: a band the spectrum leaves nearly empty (under a millionth
+    //! of the variance, as a lake's longest waves) is left flat, never transformed nor sampled.
+    bool holdsWaves(unsigned int c) const { return !_cascades[c].bins.empty(); }
 
     //! The sum of the cascades at the undisplaced point (x, y), each filtered bilinearly as a
     //! repeating texture is (texel centres at (i + 1/2) tile / size, plus half a texel: the FFT's
