@@ -369,12 +369,18 @@ TEST(Surface, TheWindsWavesAreTheCascadesOfItsWindOverItsSquare)
     EXPECT_NEAR(s->getMaxSlope(), 6.0 * std::sqrt(cascades.binSlopeVariance()), 1e-6);
     EXPECT_NEAR(s->getMaxPhaseSpeed(), cascades.maxPhaseSpeed(), 1e-9);
     EXPECT_GT(s->getMaxAmplitude(), spread);
+    // the shortest wave: the wind's cascades reach 2 cm ripples (the sum's, its 1.3 m wave)
+    EXPECT_NEAR(s->getShortestWavelength(), WaveCascades::SHORTEST_WAVE, 1e-9);
+    s->setWaveModel(WaterSurface::WAVES_SUM);
+    EXPECT_FLOAT_EQ(float(s->getShortestWavelength()), 1.3f);
+    s->setWaveModel(WaterSurface::WAVES_WIND);
 
     // no wind: flat water at the level, nothing to clear
     wind.speed = 0.0f;
     s->setWind(wind);
     EXPECT_EQ(s->height(3.0, 4.0, 2.0), 1.5);
     EXPECT_EQ(s->getMaxAmplitude(), 0.0f);
+    EXPECT_EQ(s->getShortestWavelength(), 0.0);
 }
 
 TEST(Surface, BadWindsAreClamped)

@@ -39,7 +39,9 @@ void CausticsScheduler::aim(unsigned int frame, double clearance, const Caustics
     f.tile = s.getCausticsTileSize();
     f.tileBedZ = _sceneBoxes.litWater().box.valid() ? std::min(_sceneBoxes.litWater().meanBedZ, f.level - 1e-3)
                                                      : f.level - 1.0;
-    if (f.tile > 0.0 && !(surface.usesGrid() && WaterSurface::wavesTileOver(surface.getWaves(), f.tile)) &&
+    // (the wind's cascades repeat over tiles of their own, chosen never to repeat together)
+    if (f.tile > 0.0 &&
+        !(surface.usesGrid() && surface.getWaveModel() == WaterSurface::WAVES_SUM && WaterSurface::wavesTileOver(surface.getWaves(), f.tile)) &&
         !_warnedTile.exchange(true))
         OSG_WARN << "osgWater: WaterNode \"" << _water.getName() << "\": the waves do not repeat over the caustics tile of "
                  << f.tile << " m: the tiled caustics show seams" << std::endl;

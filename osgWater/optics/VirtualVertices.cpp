@@ -153,7 +153,8 @@ Cells buildCells(const Membrane& membrane, const glm::dvec3& eye, double nEye, d
 double membraneCellSize(const WaterSurface& surface)
 {
     double cell = surface.getSize() / double(std::max(surface.getResolution(), 2u) - 1);
-    for (const Wave& w : surface.getWaves()) cell = std::min(cell, double(w.wavelength) / 8.0);
+    const double shortest = surface.getShortestWavelength(); // the sum's or the wind's
+    if (shortest > 0.0) cell = std::min(cell, shortest / 8.0);
     return cell;
 }
 

@@ -316,6 +316,17 @@ void WaterSurface::setMesh(osg::Geometry* mesh)
     rebuild();
 }
 
+double WaterSurface::getShortestWavelength() const
+{
+    if (!usesGrid()) return 0.0;
+    if (const detail::SpectralWaves* wind = getSpectralWaves())
+        return wind->heightBound() > 0.0 ? wind->shortestWave() : 0.0;
+    double shortest = 0.0;
+    for (const Wave& w : _waves)
+        if (w.amplitude > 0.0f && (shortest == 0.0 || w.wavelength < shortest)) shortest = w.wavelength;
+    return shortest;
+}
+
 double WaterSurface::getMaxPhaseSpeed() const
 {
     if (const detail::SpectralWaves* wind = getSpectralWaves()) return wind->maxPhaseSpeed();
@@ -441,8 +452,9 @@ bool WaterSurface::intersect(const osg::Vec3d& start, const osg::Vec3d& end, dou
         return p.z() - (usesGrid() ? height(p.x(), p.y(), t) : _level);
     };
     const detail::SpectralWaves* wind = getSpectralWaves();
-    double shortest = wind ? wind->shortestWave() : 1e30;
-    if (!wind)
+    double shortest = 1e30;
+    if (wind) shortest = wind->shortestWave();
+    else
         for (const Wave& w : _waves) shortest = std::min(shortest, double(w.wavelength));
     const double dxy = osg::Vec2d(d.x(), d.y()).length();
     // steps of at least a sixteenth of the shortest wave, longer where the segment is far from the
