@@ -20,10 +20,17 @@ osg::Vec3d axis(const osg::Matrixd& m, int i)
 
 }
 
-TEST(Floating, ChildrenRideTheWavesAtTheQueriedHeightAndNormal)
+class FloatingOnEitherWaves : public ::testing::TestWithParam<WaterSurface::WaveModel> {};
+INSTANTIATE_TEST_SUITE_P(Floating, FloatingOnEitherWaves, ::testing::Values(WaterSurface::WAVES_SUM, WaterSurface::WAVES_WIND),
+                         [](const ::testing::TestParamInfo<WaterSurface::WaveModel>& i) {
+                             return std::string(WaterSurface::waveModelName(i.param));
+                         });
+
+TEST_P(FloatingOnEitherWaves, ChildrenRideTheWavesAtTheQueriedHeightAndNormal)
 {
     osg::ref_ptr<WaterNode> water = new WaterNode;
     water->getSurface()->setLevel(0.7);
+    water->getSurface()->setWaveModel(GetParam()); // the wind's: a 5 m/s breeze over the 100 m water
     osg::ref_ptr<FloatingTransform> buoy = new FloatingTransform;
     buoy->setPosition(osg::Vec2d(3.0, -2.0));
     buoy->setDraft(0.25);

@@ -149,6 +149,42 @@ TEST(Queries, PickingMeetsTheAnimatedSurfaceNotTheFlatGrid)
     EXPECT_FALSE(pick(water.get(), osg::Vec3d(80, 0, 10), osg::Vec3d(80, 0, -10), hit)) << "beyond the 100 m grid";
 }
 
+// Under the wind's waves picking meets the same sampled surface the height query reads (whose
+// texels WaveCascades.* check against the spectrum's direct sums), at its first crossing
+TEST(Queries, PickingMeetsTheWindsWavesAtTheirFirstCrossing)
+{
+    osg::ref_ptr<WaterNode> water = new WaterNode;
+    water->getSurface()->setLevel(0.5);
+    WindWaves wind;
+    wind.speed = 8.0f;
+    water->getSurface()->setWind(wind);
+    water->getSurface()->setWaveModel(WaterSurface::WAVES_WIND);
+    update(water.get(), 4.0, 1);
+    const WaterSurface& s = *water->getSurface();
+    int hits = 0;
+    for (double x = -20.0; x <= 20.0; x += 5.3)
+        for (double y : { -15.0, 2.2 }) {
+            // vertical, oblique and grazing (1:20) rays from above
+            const osg::Vec3d a(x, y, 0.5 + 0.4), targets[] = { osg::Vec3d(x, y, -10), osg::Vec3d(x + 8, y - 3, -10),
+                                                               osg::Vec3d(x + 20, y, 0.5 - 0.6) };
+            for (const osg::Vec3d& b : targets) {
+                osgUtil::LineSegmentIntersector::Intersection hit;
+                if (!pick(water.get(), a, b, hit)) continue;
+                ++hits;
+                const osg::Vec3d p = hit.getWorldIntersectPoint();
+                EXPECT_NEAR(p.z(), s.height(p.x(), p.y(), 4.0), 1e-6) << "not on the surface";
+                for (int i = 0; i < 400; ++i) {
+                    const osg::Vec3d q = a + (b - a) * (hit.ratio * i / 400.0);
+                    EXPECT_GT(q.z(), s.height(q.x(), q.y(), 4.0) - 1e-9) << "an earlier crossing was missed";
+                }
+                osg::Vec3d n;
+                water->getSurfaceHeightAt(p.x(), p.y(), &n);
+                EXPECT_NEAR((hit.getWorldIntersectNormal() - n).length(), 0.0, 1e-9);
+            }
+        }
+    EXPECT_GE(hits, 20);
+}
+
 TEST(Queries, PickingThroughATransformReportsWorldPoints)
 {
     osg::ref_ptr<WaterNode> water = new WaterNode;
