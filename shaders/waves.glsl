@@ -173,7 +173,13 @@ float waterNewtonStep(vec3 P, vec3 D, vec3 hs)
 // eight height evaluations and one of the slope: llvmpipe pays for every side of a branch (early
 // exits measured no faster), so there is no cheaper path to branch to. What a fragment shades: the
 // drawn mesh only decides which pixels hold water.
+#ifdef OSGWATER_WIND
+// (each of the wind's samples reads every cascade's texture: two samples find the crossing as
+// often to within a centimetre, 0.07% of pixels against 0.04% with four, for 10% less frame)
+const int kSightSamples = 2;
+#else
 const int kSightSamples = 4;
+#endif
 const int kSightRefinements = 3;
 
 float waterAbove(vec3 C, vec3 D, float t, float eyeSide)
