@@ -22,6 +22,9 @@ std::vector<Technique> allTechniques()
     t.push_back({ "reflection-offset", [](WaterSettings& s) { s.setReflectionLookup(WaterSettings::REFLECTION_OFFSET); } });
     t.push_back({ "reflection-plane", [](WaterSettings& s) { s.setReflectionLookup(WaterSettings::REFLECTION_PLANE); } });
     t.push_back({ "mesh-grid", [](WaterSettings&) {}, osgWater::WaterSurface::MESH_GRID });
+    // the two wave models side by side, each against the exact reference of its own surface
+    t.push_back({ "waves-sum", [](WaterSettings&) {}, std::nullopt, osgWater::WaterSurface::WAVES_SUM });
+    t.push_back({ "waves-wind", [](WaterSettings&) {}, std::nullopt, osgWater::WaterSurface::WAVES_WIND });
     t.push_back({ "environment-map", [](WaterSettings& s) { s.setEnvironmentMapEnabled(true); } });
     t.push_back({ "no-rotation", [](WaterSettings& s) { s.setRefractionCameraRotation(false); } });
     t.push_back({ "rotation-thesis", [](WaterSettings& s) { s.setRefractionCameraApparentEye(false); } });

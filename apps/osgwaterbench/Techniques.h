@@ -1,6 +1,6 @@
 // The techniques and settings the benchmark compares: the scene's own settings ("default"), and
 // one axis changed at a time (refraction lookup and its steps, camera rotation, texture size,
-// Fresnel model, caustics path, glow, underwater model, the surface's mesh).
+// Fresnel model, caustics path, glow, underwater model, the surface's mesh and wave model).
 #pragma once
 #include <osgWater/WaterSettings>
 #include <osgWater/WaterSurface>
@@ -16,6 +16,8 @@ struct Technique {
     std::function<void(osgWater::WaterSettings&)> apply; //!< applied to a copy of the scene's settings
     //! The surface's mesh layout for this technique; none: the scene's (put back after each)
     std::optional<osgWater::WaterSurface::MeshLayout> mesh;
+    //! The surface's wave model (the wind's: its WindWaves); none: the scene's (put back after each)
+    std::optional<osgWater::WaterSurface::WaveModel> waves;
 };
 
 //! Every technique, "default" first.

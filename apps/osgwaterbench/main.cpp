@@ -28,6 +28,7 @@
 #include <thread>
 #include <iostream>
 #include <map>
+#include <tuple>
 #include <memory>
 #include <glm/geometric.hpp>
 
@@ -253,10 +254,13 @@ int main(int argc, char** argv)
     const RayCaster sceneCaster(collectScene(*water));
     std::cout << "reference: " << sceneCaster.size() << " scene triangles" << std::endl;
     std::map<double, std::unique_ptr<WaterCaster>> waterCasters;
-    std::vector<ReferenceImage> references(views.size());
-    std::map<std::pair<double, int>, PhotonImage> photonImages; // (time, caustics resolution) -> reference
+    // the references of each wave model's surface: (view, model) -> reference image, and
+    // (time, caustics resolution, model) -> caustics
+    std::map<std::pair<size_t, int>, ReferenceImage> references;
+    std::map<std::tuple<double, int, int>, PhotonImage> photonImages;
     osgWater::WaterSurface* surface = water->getSurface();
     const osgWater::WaterSurface::MeshLayout sceneMesh = surface->getMeshLayout();
+    const osgWater::WaterSurface::WaveModel sceneWaves = surface->getWaveModel();
     for (const View& v : views)
         if (!waterCasters.count(v.t)) waterCasters[v.t] = std::make_unique<WaterCaster>(*surface, v.t);
     std::cout << "reference: " << waterCasters.begin()->second->describe() << std::endl;
@@ -269,6 +273,8 @@ int main(int argc, char** argv)
         tech.apply(*s);
         water->setSettings(s.get());
         surface->setMeshLayout(tech.mesh ? *tech.mesh : sceneMesh);
+        surface->setWaveModel(tech.waves ? *tech.waves : sceneWaves);
+        const int model = int(surface->getWaveModel());
         for (size_t vi = 0; vi < views.size(); ++vi) {
             const View& v = views[vi];
             Record r;
@@ -306,12 +312,13 @@ int main(int argc, char** argv)
             const Estimate e = probe.capture(*water, v.t);
             const WaterCaster& waterCaster = *waterCasters[v.t];
             const Reference reference(sceneCaster, waterCaster, *surface, v.t, media);
-            if (references[vi].pixels.empty())
-                references[vi] = traceView(reference, probe.camera()->getViewMatrix(), probe.camera()->getProjectionMatrix(),
-                                           o.width, o.height);
+            ReferenceImage& traced = references[{ vi, model }];
+            if (traced.pixels.empty())
+                traced = traceView(reference, probe.camera()->getViewMatrix(), probe.camera()->getProjectionMatrix(), o.width,
+                                   o.height);
             const double captureAndTraceS = osg::Timer::instance()->delta_s(phase, osg::Timer::instance()->tick());
             r.eyeBelow = reference.eyeBelow(glm::dvec3(v.eye.x(), v.eye.y(), v.eye.z()));
-            ViewErrors ve = measureView(references[vi], e, sceneCaster);
+            ViewErrors ve = measureView(traced, e, sceneCaster);
             ve.drawnSurfacePx = drawnSurfaceError(e, *surface, v.t);
             r.waterPixels = ve.waterPixels;
             r.misses = ve.misses;
@@ -345,7 +352,7 @@ int main(int argc, char** argv)
                     caustics = tileSeenFromTheSun(caustics.get(), sceneCaster, cc->getLighting(),
                                                   water->getSettings()->getSunDirection(), surface->getLevel(), resolution);
                 }
-                const std::pair<double, int> key(v.t, resolution); // a preset may change the resolution
+                const std::tuple<double, int, int> key(v.t, resolution, model); // a preset may change the resolution
                 auto it = photonImages.find(key);
                 if (it == photonImages.end()) {
                     PhotonSettings ps;
@@ -377,6 +384,7 @@ int main(int argc, char** argv)
     }
     water->setSettings(new osgWater::WaterSettings(*base, osg::CopyOp::DEEP_COPY_ALL));
     surface->setMeshLayout(sceneMesh);
+    surface->setWaveModel(sceneWaves);
 
     if (!writeJson(o.out + "/results.json", records, error) || !writeCsv(o.out + "/results.csv", records, error)) {
         std::cerr << "error: " << error << std::endl;
