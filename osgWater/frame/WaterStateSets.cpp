@@ -84,11 +84,12 @@ WaterStateSets::WaterStateSets() : _programs(new ProgramLibrary)
     // waves: the scene program shares their inputs
     // the wind's waves: their cascades' texture and scales (set when the surface has them)
     _water->addUniform(new osg::Uniform("osgWater_WaveCascades", int(UNIT_WAVES)));
+    _water->addUniform(new osg::Uniform("osgWater_WaveHeights", int(UNIT_WAVE_HEIGHTS)));
     _water->addUniform(new osg::Uniform(osg::Uniform::FLOAT_VEC4, "osgWater_Cascades", WaveCascades::CASCADES));
     _water->addUniform(new osg::Uniform("osgWater_CascadeCount", 0));
     _water->addUniform(new osg::Uniform("osgWater_CascadeTexels", 1.0f));
     for (const char* u : { "osgWater_Waves", "osgWater_WavePhases", "osgWater_WaveCount", "osgWater_Level", "osgWater_IOR",
-                           "osgWater_PhotonExtinction", "osgWater_FresnelQ", "osgWater_SunHalo", "osgWater_WaveCascades",
+                           "osgWater_PhotonExtinction", "osgWater_FresnelQ", "osgWater_SunHalo", "osgWater_WaveCascades", "osgWater_WaveHeights",
                            "osgWater_Cascades", "osgWater_CascadeCount", "osgWater_CascadeTexels" })
         _scene->addUniform(_water->getUniform(u));
     _scene->addUniform(new osg::Uniform("osgWater_MembraneCell", 1.0f));
@@ -165,8 +166,13 @@ void WaterStateSets::applyWind(detail::SpectralWaves* wind)
     // caustics, the photons') lies under one of the two state sets
     for (osg::StateSet* ss : { _water.get(), _scene.get() }) {
         setDefineIf(ss, "OSGWATER_WIND", wind != nullptr);
-        if (wind) ss->setTextureAttribute(UNIT_WAVES, wind->texture());
-        else ss->removeTextureAttribute(UNIT_WAVES, osg::StateAttribute::TEXTURE);
+        if (wind) {
+            ss->setTextureAttribute(UNIT_WAVES, wind->texture());
+            ss->setTextureAttribute(UNIT_WAVE_HEIGHTS, wind->heightTexture());
+        } else {
+            ss->removeTextureAttribute(UNIT_WAVES, osg::StateAttribute::TEXTURE);
+            ss->removeTextureAttribute(UNIT_WAVE_HEIGHTS, osg::StateAttribute::TEXTURE);
+        }
     }
     osg::Uniform* scales = _water->getUniform("osgWater_Cascades");
     for (unsigned int c = 0; c < WaveCascades::CASCADES; ++c) scales->setElement(c, wind ? wind->cascadeScale(c) : osg::Vec4f());

@@ -55,7 +55,8 @@ private:
 }
 
 SpectralWaves::SpectralWaves(const WaveCascades::Params& params)
-    : _cascades(params), _heightBound(0.0), _slopeBound(0.0), _texture(new osg::Texture2DArray)
+    : _cascades(params), _heightBound(0.0), _slopeBound(0.0), _texture(new osg::Texture2DArray),
+      _heights(new osg::Texture2DArray)
 {
     _heightBound = HEIGHT_SIGMAS * std::sqrt(_cascades.binVariance());
     _slopeBound = HEIGHT_SIGMAS * std::sqrt(_cascades.binSlopeVariance());
@@ -93,6 +94,28 @@ SpectralWaves::SpectralWaves(const WaveCascades::Params& params)
         _images.push_back(image);
     }
     _texture->setSubloadCallback(new CascadeUpload(_images));
+
+    // the heights alone, level 0: what the sight ray's search reads (one channel a texel costs a
+    // software rasteriser a third of four)
+    _heights->setTextureSize(int(n), int(n), int(layers));
+    _heights->setInternalFormat(GL_R32F);
+    _heights->setSourceFormat(GL_RED);
+    _heights->setSourceType(GL_FLOAT);
+    _heights->setFilter(osg::Texture::MIN_FILTER, osg::Texture::LINEAR);
+    _heights->setFilter(osg::Texture::MAG_FILTER, osg::Texture::LINEAR);
+    for (osg::Texture::WrapParameter w : { osg::Texture::WRAP_S, osg::Texture::WRAP_T })
+        _heights->setWrap(w, osg::Texture::REPEAT);
+    _heights->setResizeNonPowerOfTwoHint(false);
+    _heights->setDataVariance(osg::Object::DYNAMIC);
+    for (unsigned int layer = 0; layer < layers; ++layer) {
+        osg::ref_ptr<osg::Image> image = new osg::Image;
+        image->allocateImage(int(n), int(n), 1, GL_RED, GL_FLOAT);
+        image->setInternalTextureFormat(GL_R32F);
+        std::fill(reinterpret_cast<float*>(image->data()), reinterpret_cast<float*>(image->data()) + size_t(n) * n, 0.0f);
+        image->setDataVariance(osg::Object::DYNAMIC);
+        _heights->setImage(layer, image.get());
+        _heightImages.push_back(image);
+    }
     fill();
 }
 
@@ -130,7 +153,9 @@ void SpectralWaves::fill()
     for (unsigned int layer = 0; layer < cascadeCount(); ++layer) {
         float* level = reinterpret_cast<float*>(_images[layer]->data());
         const std::vector<WaveCascades::Texel>& texels = _cascades.texels(_layers[layer]);
+        float* heights = reinterpret_cast<float*>(_heightImages[layer]->data());
         for (size_t i = 0; i < texels.size(); ++i) {
+            heights[i] = texels[i].displacement.z();
             level[kChannels * i + 0] = texels[i].displacement.z();
             level[kChannels * i + 1] = texels[i].slope.x();
             level[kChannels * i + 2] = texels[i].slope.y();
@@ -150,6 +175,7 @@ void SpectralWaves::fill()
             level = next;
         }
         _images[layer]->dirty();
+        _heightImages[layer]->dirty();
     }
 }
 

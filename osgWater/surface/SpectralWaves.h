@@ -29,6 +29,8 @@ public:
     //! The texture's texels made those of time t (once a frame, the frame's time).
     void applyTime(double t);
     osg::Texture2DArray* texture() const { return _texture.get(); }
+    //! The same layers' heights alone, level 0 (R32F): what the sight ray's search reads.
+    osg::Texture2DArray* heightTexture() const { return _heights.get(); }
     //! Per layer of the texture (a cascade that holds waves), what the shader needs:
     //! (1 / tile, the height bound, the band's top k, 0).
     osg::Vec4f cascadeScale(unsigned int layer) const;
@@ -54,8 +56,8 @@ private:
     std::vector<unsigned int> _layers; // the cascades that hold waves, one texture layer each
     std::vector<double> _cascadeBound;
     double _heightBound, _slopeBound;
-    osg::ref_ptr<osg::Texture2DArray> _texture;
-    std::vector<osg::ref_ptr<osg::Image>> _images;
+    osg::ref_ptr<osg::Texture2DArray> _texture, _heights;
+    std::vector<osg::ref_ptr<osg::Image>> _images, _heightImages;
 };
 
 } }
