@@ -302,6 +302,9 @@ bool writeOsgt(const std::string& path)
         waves.push_back(w);
     }
     water->getSurface()->setWaves(waves);
+    // drawn: a breeze over the lake (5 m/s, its fetch the lake's size); the sum of sines above
+    // stays in the file for --waves sum
+    water->getSurface()->setWaveModel(osgWater::WaterSurface::WAVES_WIND);
     water->getSettings()->setCausticsResolution(512);
     water->getSettings()->setPhotonGridSize(1024); // four photons per caustics texel, the settings' default ratio
     osg::ref_ptr<osg::ProxyNode> scene = new osg::ProxyNode;

@@ -29,7 +29,11 @@ std::string describeSettings(const WaterSettings& s)
 std::string describeSurface(const osgWater::WaterSurface& s)
 {
     if (!s.usesGrid()) return "mesh user";
-    return std::string("mesh ") + osgWater::WaterSurface::meshLayoutName(s.getMeshLayout());
+    std::ostringstream o;
+    o << "mesh " << osgWater::WaterSurface::meshLayoutName(s.getMeshLayout()) << ", waves ";
+    if (s.getWaveModel() == osgWater::WaterSurface::WAVES_WIND) o << "wind " << s.getWind().speed << " m/s";
+    else o << "sum";
+    return o.str();
 }
 
 std::string describeCaustics(const osgWater::WaterNode& water, const osgWater::ViewReport& report)
@@ -75,7 +79,7 @@ public:
                                  ms(r.milliseconds[osgWater::PASS_PHOTONS]) + " (GPU)\n";
         _text->setText(line + describeSettings(*_water->getSettings()) + ", " +
                        describeSurface(*_water->getSurface()) + ", caustics " + describeCaustics(*_water, r) +
-                       "\nkeys: r reflection  f refraction  t technique  e reflection lookup  +/- steps  m fresnel  o rotation  k caustics  g gather  a caustics mesh  x 2x2  y reflective  v environment  i surface mesh  u under water  n model  l glow  s stats  arrows move");
+                       "\nkeys: r reflection  f refraction  t technique  e reflection lookup  +/- steps  m fresnel  o rotation  k caustics  g gather  a caustics mesh  x 2x2  y reflective  v environment  i surface mesh  w/W wind  j waves  u under water  n model  l glow  s stats  arrows move");
         traverse(node, nv);
     }
 

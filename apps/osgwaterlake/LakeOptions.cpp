@@ -50,8 +50,9 @@ void LakeOptions::describe(osg::ApplicationUsage& u)
     u.addCommandLineOption("--pond", "Show a garden pond on the north rim, a second water above the lake (key p)");
     u.addCommandLineOption("--lookup <one-step|iterative|plane>", "Refraction lookup technique");
     u.addCommandLineOption("--reflection-lookup <search|offset|plane>", "Reflection lookup technique (default search)");
-    u.addCommandLineOption("--calm", "Flat water: the scene's waves off");
-    u.addCommandLineOption("--wind <m/s>", "Waves raised by a wind of this speed over the lake (its fetch the lake's size) instead of the scene's sum of waves");
+    u.addCommandLineOption("--calm", "Flat water: the scene's waves off (the wind's and the sum's)");
+    u.addCommandLineOption("--wind <m/s>", "The wind's waves, raised by a wind of this speed (0-40) over the lake (its fetch the lake's size); default the scene's, a 5 m/s breeze (keys w, W)");
+    u.addCommandLineOption("--waves <wind|sum>", "The wave model: the wind's waves (the scene's default) or the thesis's sum of sines (key j)");
     u.addCommandLineOption("--mesh <rings|grid>", "The surface's mesh: rings around the eye (default) or the thesis's uniform grid");
     u.addCommandLineOption("--planes <height> <depth>", "Plane-offset lookups' planes, metres from the level (0: from the scene)");
     u.addCommandLineOption("--steps <n>", "Candidates of the iterative search (1-8)");
@@ -160,6 +161,13 @@ bool LakeOptions::read(osg::ArgumentParser& args)
         std::cerr << "error: --wind takes a speed in m/s, 0 to 40" << std::endl;
         return false;
     }
+    if (args.read("--waves", waves)) {
+        osgWater::WaterSurface::WaveModel model;
+        if (!osgWater::WaterSurface::waveModelFromName(waves, model)) {
+            std::cerr << "error: --waves wind|sum" << std::endl;
+            return false;
+        }
+    }
     if (args.read("--mesh", mesh)) {
         osgWater::WaterSurface::MeshLayout layout;
         if (!osgWater::WaterSurface::meshLayoutFromName(mesh, layout)) {
@@ -194,13 +202,16 @@ void LakeOptions::apply(osgWater::WaterNode& water) const
     if (const osgWater::WaterType* type = osgWater::findWaterType(waterType)) osgWater::applyWaterType(s, *type);
     else s.setWaterModel(WaterSettings::WATER_THESIS);
     for (const auto& set : _setters) set(s);
-    if (calm) water.getSurface()->setWaves({});
-    if (wind >= 0.0) {
-        osgWater::WindWaves w = water.getSurface()->getWind();
-        w.speed = float(wind);
-        water.getSurface()->setWind(w);
-        water.getSurface()->setWaveModel(osgWater::WaterSurface::WAVES_WIND);
+    osgWater::WaterSurface& waterSurface = *water.getSurface();
+    osgWater::WaterSurface::WaveModel model;
+    if (osgWater::WaterSurface::waveModelFromName(waves, model)) waterSurface.setWaveModel(model);
+    if (wind >= 0.0 || calm) {
+        osgWater::WindWaves w = waterSurface.getWind();
+        w.speed = calm ? 0.0f : float(wind);
+        waterSurface.setWind(w);
+        if (wind >= 0.0 && waves.empty()) waterSurface.setWaveModel(osgWater::WaterSurface::WAVES_WIND);
     }
+    if (calm) waterSurface.setWaves({});
     osgWater::WaterSurface::MeshLayout layout;
     if (osgWater::WaterSurface::meshLayoutFromName(mesh, layout)) water.getSurface()->setMeshLayout(layout);
     if (causticsTile > 0.0) {

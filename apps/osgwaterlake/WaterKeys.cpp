@@ -50,6 +50,26 @@ bool WaterKeys::handle(const osgGA::GUIEventAdapter& ea, osgGA::GUIActionAdapter
     case 'x': s.setCausticsSupersampling(!s.getCausticsSupersampling()); return true;
     case 'y': s.setReflectiveCaustics(!s.getReflectiveCaustics()); return true;
     case 'v': s.setEnvironmentMapEnabled(!s.getEnvironmentMapEnabled()); return true;
+    case 'j': { // the wind's waves <-> the sum of sines
+        osgWater::WaterSurface& surface = *_water->getSurface();
+        surface.setWaveModel(surface.getWaveModel() == osgWater::WaterSurface::WAVES_WIND ? osgWater::WaterSurface::WAVES_SUM
+                                                                                       : osgWater::WaterSurface::WAVES_WIND);
+        return true;
+    }
+    case 'w': case 'W': { // the wind one step up (w) or down (W): still, 2, 5, 8, 12, 20 m/s
+        osgWater::WaterSurface& surface = *_water->getSurface();
+        const float steps[] = { 0.0f, 2.0f, 5.0f, 8.0f, 12.0f, 20.0f };
+        const int n = int(sizeof(steps) / sizeof(steps[0]));
+        osgWater::WindWaves w = surface.getWind();
+        int i = 0;
+        while (i + 1 < n && steps[i] < w.speed) ++i; // the step at or above the wind now
+        if (ea.getKey() == 'w') i = steps[i] > w.speed ? i : std::min(i + 1, n - 1);
+        else i = std::max(i - 1, 0);
+        w.speed = steps[i];
+        surface.setWind(w);
+        surface.setWaveModel(osgWater::WaterSurface::WAVES_WIND);
+        return true;
+    }
     case 'i': {
         osgWater::WaterSurface& surface = *_water->getSurface();
         surface.setMeshLayout(surface.getMeshLayout() == osgWater::WaterSurface::MESH_GRID
