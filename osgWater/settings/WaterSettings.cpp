@@ -2,6 +2,7 @@
 #include "optics/Optics.h"
 #include <osgWater/WaterTypes>
 #include "settings/Clamp.h"
+#include "settings/EnumNames.h"
 #include <osg/Notify>
 #include <osg/Math>
 #include <osg/io_utils>
@@ -142,22 +143,12 @@ const char* const kUnderwaterModelNames[] = { "physical", "thesis" };
 const char* const kCausticsGatherNames[] = { "auto", "copy", "texture", "cpu" };
 const char* const kCausticsMethodNames[] = { "photons", "mesh", "procedural", "procedural-screen" };
 
-template <typename E, size_t N>
-const char* nameOf(const char* const (&names)[N], E value)
+// an unknown value reads as the table's first name
+template <typename E, size_t N> const char* nameOf(const char* const (&names)[N], E value)
 {
-    return int(value) >= 0 && int(value) < int(N) ? names[int(value)] : names[0];
+    return detail::nameOf(names, value, names[0]);
 }
-
-template <typename E, size_t N>
-bool valueOf(const char* const (&names)[N], const std::string& name, E& value)
-{
-    for (size_t i = 0; i < N; ++i)
-        if (name == names[i]) {
-            value = E(i);
-            return true;
-        }
-    return false;
-}
+using detail::valueOf;
 }
 
 const char* WaterSettings::fresnelModelName(FresnelModel m) { return nameOf(kFresnelNames, m); }

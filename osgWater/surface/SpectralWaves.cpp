@@ -54,6 +54,24 @@ private:
 };
 }
 
+namespace {
+// a float array of `layers` periodic n x n tiles, rewritten every frame
+void setUpLayers(osg::Texture2DArray& t, unsigned int n, unsigned int layers, GLint internalFormat, GLenum sourceFormat,
+                 osg::Texture::FilterMode minFilter)
+{
+    t.setTextureSize(int(n), int(n), int(layers));
+    t.setInternalFormat(internalFormat);
+    t.setSourceFormat(sourceFormat);
+    t.setSourceType(GL_FLOAT);
+    t.setFilter(osg::Texture::MIN_FILTER, minFilter);
+    t.setFilter(osg::Texture::MAG_FILTER, osg::Texture::LINEAR);
+    for (osg::Texture::WrapParameter w : { osg::Texture::WRAP_S, osg::Texture::WRAP_T })
+        t.setWrap(w, osg::Texture::REPEAT); // each cascade is a periodic tile
+    t.setResizeNonPowerOfTwoHint(false);
+    t.setDataVariance(osg::Object::DYNAMIC);
+}
+}
+
 SpectralWaves::SpectralWaves(const WaveCascades::Params& params)
     : _cascades(params), _heightBound(0.0), _slopeBound(0.0), _texture(new osg::Texture2DArray),
       _heights(new osg::Texture2DArray)
@@ -67,16 +85,7 @@ SpectralWaves::SpectralWaves(const WaveCascades::Params& params)
         }
 
     const unsigned int n = _cascades.params().size, layers = std::max(cascadeCount(), 1u);
-    _texture->setTextureSize(int(n), int(n), int(layers));
-    _texture->setInternalFormat(GL_RGBA32F_ARB);
-    _texture->setSourceFormat(GL_RGBA);
-    _texture->setSourceType(GL_FLOAT);
-    _texture->setFilter(osg::Texture::MIN_FILTER, osg::Texture::LINEAR_MIPMAP_LINEAR);
-    _texture->setFilter(osg::Texture::MAG_FILTER, osg::Texture::LINEAR);
-    for (osg::Texture::WrapParameter w : { osg::Texture::WRAP_S, osg::Texture::WRAP_T })
-        _texture->setWrap(w, osg::Texture::REPEAT); // each cascade is a periodic tile
-    _texture->setResizeNonPowerOfTwoHint(false);
-    _texture->setDataVariance(osg::Object::DYNAMIC);
+    setUpLayers(*_texture, n, layers, GL_RGBA32F_ARB, GL_RGBA, osg::Texture::LINEAR_MIPMAP_LINEAR);
     // every level down to 1 x 1, in one block per layer
     osg::Image::MipmapDataType offsets;
     size_t texels = size_t(n) * n;
@@ -97,16 +106,7 @@ SpectralWaves::SpectralWaves(const WaveCascades::Params& params)
 
     // the heights alone, level 0: what the sight ray's search reads (one channel a texel costs a
     // software rasteriser a third of four)
-    _heights->setTextureSize(int(n), int(n), int(layers));
-    _heights->setInternalFormat(GL_R32F);
-    _heights->setSourceFormat(GL_RED);
-    _heights->setSourceType(GL_FLOAT);
-    _heights->setFilter(osg::Texture::MIN_FILTER, osg::Texture::LINEAR);
-    _heights->setFilter(osg::Texture::MAG_FILTER, osg::Texture::LINEAR);
-    for (osg::Texture::WrapParameter w : { osg::Texture::WRAP_S, osg::Texture::WRAP_T })
-        _heights->setWrap(w, osg::Texture::REPEAT);
-    _heights->setResizeNonPowerOfTwoHint(false);
-    _heights->setDataVariance(osg::Object::DYNAMIC);
+    setUpLayers(*_heights, n, layers, GL_R32F, GL_RED, osg::Texture::LINEAR);
     for (unsigned int layer = 0; layer < layers; ++layer) {
         osg::ref_ptr<osg::Image> image = new osg::Image;
         image->allocateImage(int(n), int(n), 1, GL_RED, GL_FLOAT);

@@ -1,5 +1,6 @@
 #include <osgWater/WaterSurface>
 #include "settings/Clamp.h"
+#include "settings/EnumNames.h"
 #include "surface/SpectralWaves.h"
 #include <osg/Notify>
 #include <algorithm>
@@ -155,19 +156,17 @@ void WaterSurface::setMeshLayout(MeshLayout layout)
     rebuild();
 }
 
-const char* WaterSurface::meshLayoutName(MeshLayout layout)
-{
-    return layout == MESH_GRID ? "grid" : layout == MESH_EYE_RINGS ? "rings" : nullptr;
+namespace {
+// each enum's names in its values' order
+const char* const kMeshLayoutNames[] = { "grid", "rings" };
+const char* const kWaveModelNames[] = { "sum", "wind" };
 }
+
+const char* WaterSurface::meshLayoutName(MeshLayout layout) { return detail::nameOf(kMeshLayoutNames, layout, nullptr); }
 
 bool WaterSurface::meshLayoutFromName(const std::string& name, MeshLayout& layout)
 {
-    for (MeshLayout l : { MESH_GRID, MESH_EYE_RINGS })
-        if (name == meshLayoutName(l)) {
-            layout = l;
-            return true;
-        }
-    return false;
+    return detail::valueOf(kMeshLayoutNames, name, layout);
 }
 
 namespace {
@@ -242,19 +241,11 @@ void WaterSurface::setWaveModel(WaveModel model)
     rewaved();
 }
 
-const char* WaterSurface::waveModelName(WaveModel model)
-{
-    return model == WAVES_SUM ? "sum" : model == WAVES_WIND ? "wind" : nullptr;
-}
+const char* WaterSurface::waveModelName(WaveModel model) { return detail::nameOf(kWaveModelNames, model, nullptr); }
 
 bool WaterSurface::waveModelFromName(const std::string& name, WaveModel& model)
 {
-    for (WaveModel m : { WAVES_SUM, WAVES_WIND })
-        if (name == waveModelName(m)) {
-            model = m;
-            return true;
-        }
-    return false;
+    return detail::valueOf(kWaveModelNames, name, model);
 }
 
 void WaterSurface::setWind(const WindWaves& wind)
