@@ -279,7 +279,8 @@ vec3 owShadeWater(vec3 U, vec3 Nup, vec3 E, out vec4 debugOut)
 // What a fragment of the water writes at U (on the surface; `drawn`: the rasterised point it was
 // found from): its colour (linear light, encoded for display: the water is drawn in the view
 // itself), or the debug output (OSGWATER_DEBUG 4: the analytic surface under U;
-// 5: the drawn point; else what owShadeWater reported), the same for the surface and the cap.
+// 5: the drawn point; 6: the slopes and the roughness there; else what owShadeWater reported), the
+// same for the surface and the cap.
 vec4 owWaterFragment(vec3 U, vec3 drawn, vec3 color, vec4 debugHit)
 {
 #if defined(OSGWATER_DEBUG) && OSGWATER_DEBUG == OSGWATER_DEBUG_SURFACE
@@ -290,6 +291,12 @@ vec4 owWaterFragment(vec3 U, vec3 drawn, vec3 color, vec4 debugHit)
 #endif
 #elif defined(OSGWATER_DEBUG) && OSGWATER_DEBUG == OSGWATER_DEBUG_DRAWN_SURFACE
     return vec4(drawn, 2.0);
+#elif defined(OSGWATER_DEBUG) && OSGWATER_DEBUG == OSGWATER_DEBUG_SLOPES
+#ifdef OSGWATER_GRID
+    return vec4(waterSlopesAndRoughness(U.xy).yzw, 2.0);
+#else
+    return vec4(0.0, 0.0, 0.0, -1.0); // a user's mesh: its normals, no slopes of waves
+#endif
 #elif defined(OSGWATER_DEBUG)
     return debugHit;
 #else

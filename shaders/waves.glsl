@@ -12,22 +12,33 @@ uniform sampler2DArray osgWater_WaveHeights; // the same layers' heights alone, 
 uniform vec4 osgWater_Cascades[5];    // per cascade: (1 / tile, height bound, the band's top k, 0)
 uniform int osgWater_CascadeCount;
 uniform float osgWater_CascadeTexels; // texels along a tile's side
+uniform float osgWater_UnresolvedSlopes; // the slopes' variance no cascade holds (to Cox and Munk's)
 
 // metres the shaded point's pixel spans on the water: the mip level the cascades are read at (0
 // reads the texels as the CPU does). Set by a fragment shader's main before it asks for the waves.
 float waterFootprint = 0.0;
 
-// (height, dh/dx, dh/dy) filtered over `footprint` metres
-vec3 waterSampleOver(vec2 p, float footprint)
+// (height, dh/dx, dh/dy, roughness) filtered over `footprint` metres. The roughness is the slopes'
+// variance the point's normal does not show: per cascade, the mean |grad h|^2 under the filter less
+// the square of the mean slopes (what the filtering averaged away; the cascades are independent, so
+// their variances add), plus the slopes no cascade holds.
+vec4 waterSampleWithRoughness(vec2 p, float footprint)
 {
-    vec3 r = vec3(osgWater_Level, 0.0, 0.0);
+    vec4 r = vec4(osgWater_Level, 0.0, 0.0, osgWater_UnresolvedSlopes);
     for (int c = 0; c < 5; ++c) {
         if (c >= osgWater_CascadeCount) break;
         vec4 s = osgWater_Cascades[c];
         float lod = log2(max(footprint * s.x * osgWater_CascadeTexels, 1e-6));
-        r += textureLod(osgWater_WaveCascades, vec3(p * s.x + 0.5 / osgWater_CascadeTexels, float(c)), lod).xyz;
+        vec4 t = textureLod(osgWater_WaveCascades, vec3(p * s.x + 0.5 / osgWater_CascadeTexels, float(c)), lod);
+        r += vec4(t.xyz, max(t.w - dot(t.yz, t.yz), 0.0));
     }
     return r;
+}
+
+// (height, dh/dx, dh/dy) filtered over `footprint` metres
+vec3 waterSampleOver(vec2 p, float footprint)
+{
+    return waterSampleWithRoughness(p, footprint).xyz;
 }
 
 // The height at level 0, bilinear, from the heights' own one-channel texture: what the CPU's
@@ -54,6 +65,12 @@ float waterHeightDrawn(vec2 p, float cell)
 vec3 waterHeightAndSlope(vec2 p)
 {
     return waterSampleOver(p, waterFootprint);
+}
+
+// (height, dh/dx, dh/dy, the slopes' variance below the pixel: its roughness) at the footprint
+vec4 waterSlopesAndRoughness(vec2 p)
+{
+    return waterSampleWithRoughness(p, waterFootprint);
 }
 
 // How far a mesh whose cells are `cell` metres across can lie from the surface: each cascade
@@ -142,6 +159,12 @@ float waterDrawnErrorBound(float cell, bool faded)
         e += abs(w.z) * (1.0 - keep * cos(3.1415927 * min(1.0 / cellsPerWave, 1.0)));
     }
     return e;
+}
+
+// the sum's waves are all drawn: no roughness
+vec4 waterSlopesAndRoughness(vec2 p)
+{
+    return vec4(waterHeightAndSlope(p), 0.0);
 }
 
 vec3 waterNormal(vec2 p)

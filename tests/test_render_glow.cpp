@@ -4,6 +4,7 @@
 #include "GLHarness.h"
 #include <osgWater/WaterNode>
 #include "optics/Srgb.h"
+#include "surface/SpectralWaves.h"
 #include <algorithm>
 #include <cmath>
 #include <iostream>
@@ -237,4 +238,71 @@ TEST(Glow, PassesRemadeForANewSizeKeepTheirPrograms)
     ASSERT_NE(passes->getGlow(), before.get()) << "the glow passes should have been remade";
     EXPECT_EQ(passes->getGlow()->getComposite()->getStateSet()->getAttribute(osg::StateAttribute::PROGRAM), program);
     EXPECT_EQ(osgWater::internals(*water).getStateSets().getPrograms().size(), programs);
+}
+
+// Water too far for its waves to be drawn: each texel of the highlight spans more than every one of
+// the wind's tiles, so the cascades read there are the tiles' means (level water) and every slope is
+// roughness, sigma^2 the water's mean square slope. The highlight is then the thesis's lobe widened
+// by the slopes: pow(cos a, e) is close to a Gaussian of the angle a with variance 1/e per axis; a
+// facet sloped by s turns the mirror direction by 2 s, a Gaussian of variance 2 sigma^2 per axis (the
+// mean square slope sigma^2 is both axes'); together a lobe of exponent e' = e / (1 + 2 e sigma^2),
+// scaled by e'/e to keep its light. Without the roughness the lobe would be e's, a spot 12 times
+// brighter and 3.5 times narrower.
+TEST(Glow, WaterTooFarForItsWavesGlowsWithTheSlopesLobe)
+{
+    Harness h(256, 256);
+    REQUIRE_GL(h);
+    osg::ref_ptr<WaterNode> water = new WaterNode;
+    WaterSurface* surface = water->getSurface();
+    surface->setSize(20000.0f);
+    WindWaves breeze; // 5 m/s over 140 m: waves of 40 cm, tiles of metres
+    breeze.fetch = 140.0f;
+    surface->setWind(breeze);
+    surface->setWaveModel(WaterSurface::WAVES_WIND);
+    WaterSettings* s = water->getSettings();
+    s->setCausticsEnabled(false);
+    const osg::Vec3d L(0.0, 0.5, std::sqrt(0.75)); // the sun 60 degrees up
+    s->setSunDirection(L);
+    s->setGlowEnabled(true);
+    h.setScene(water.get());
+    // the sun's mirror image from 6 km up lies 6928 m away along -R, R = (0, -0.5, 0.866)
+    const osg::Vec3d eye(0, -3000, 6000), R(-L.x(), -L.y(), L.z());
+    h.lookAt(eye, eye - R * (6000.0 / R.z()), 30.0);
+    h.frame(2.0);
+    ViewPasses* passes = osgWater::internals(*water).getViewPasses(h.camera());
+    ASSERT_TRUE(passes && passes->getGlowDrawn());
+    osg::ref_ptr<osg::Image> highlight = h.readTexture(passes->getGlow()->getHighlightTexture());
+    ASSERT_TRUE(highlight.valid());
+
+    const detail::SpectralWaves* wind = surface->getSpectralWaves();
+    ASSERT_NE(wind, nullptr);
+    // a highlight texel spans about 6928 m x 0.52 rad / 64 = 57 m; every tile is shorter
+    for (unsigned int c = 0; c < wind->cascadeCount(); ++c) EXPECT_LT(1.0 / wind->cascadeScale(c).x(), 40.0) << c;
+    const double sigma2 = wind->meanSquareSlope(), e = s->getGlowExponent();
+    const double coxMunk = 0.003 + 0.00512 * 5.0;
+    EXPECT_NEAR(sigma2, coxMunk, 0.2 * coxMunk);
+    const double e1 = e / (1.0 + 2.0 * e * sigma2);
+
+    const osg::Camera* cam = h.camera();
+    const osg::Matrixd ndcToLocal = osg::Matrixd::inverse(cam->getViewMatrix() * cam->getProjectionMatrix());
+    const osg::Vec3 sun = s->getSunColor();
+    double worst = 0.0, peak = 0.0, lit = 0.0;
+    for (int j = 0; j < highlight->t(); ++j)
+        for (int i = 0; i < highlight->s(); ++i) {
+            const osg::Vec3d ndc(2.0 * (i + 0.5) / highlight->s() - 1.0, 2.0 * (j + 0.5) / highlight->t() - 1.0, 0.0);
+            const osg::Vec3d dir = ndc * ndcToLocal - eye;
+            ASSERT_LT(dir.z(), 0.0);
+            const osg::Vec3d P = eye + dir * (-eye.z() / dir.z());
+            osg::Vec3d E = eye - P;
+            E.normalize();
+            const double expected = (e1 / e) * std::pow(std::max(R * E, 0.0), e1) * sun.x();
+            const double got = pixel(highlight.get(), i, j)[0];
+            worst = std::max(worst, std::fabs(got - expected) / (0.02 * e1 / e + 0.03 * expected));
+            peak = std::max(peak, got);
+            lit += got > 0.1 * e1 / e;
+        }
+    // the lobe within 3% (the highlight's half floats, the drawn mesh's waves), plus 2% of its peak
+    EXPECT_LT(worst, 1.0);
+    EXPECT_NEAR(peak, e1 / e, 0.05 * e1 / e);
+    EXPECT_GT(lit, 0.1 * highlight->s() * highlight->t()) << "a wide glitter path, not a spot";
 }

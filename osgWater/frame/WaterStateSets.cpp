@@ -88,9 +88,10 @@ WaterStateSets::WaterStateSets() : _programs(new ProgramLibrary)
     _water->addUniform(new osg::Uniform(osg::Uniform::FLOAT_VEC4, "osgWater_Cascades", WaveCascades::CASCADES));
     _water->addUniform(new osg::Uniform("osgWater_CascadeCount", 0));
     _water->addUniform(new osg::Uniform("osgWater_CascadeTexels", 1.0f));
+    _water->addUniform(new osg::Uniform("osgWater_UnresolvedSlopes", 0.0f));
     for (const char* u : { "osgWater_Waves", "osgWater_WavePhases", "osgWater_WaveCount", "osgWater_Level", "osgWater_IOR",
                            "osgWater_PhotonExtinction", "osgWater_FresnelQ", "osgWater_SunHalo", "osgWater_WaveCascades", "osgWater_WaveHeights",
-                           "osgWater_Cascades", "osgWater_CascadeCount", "osgWater_CascadeTexels" })
+                           "osgWater_Cascades", "osgWater_CascadeCount", "osgWater_CascadeTexels", "osgWater_UnresolvedSlopes" })
         _scene->addUniform(_water->getUniform(u));
     _scene->addUniform(new osg::Uniform("osgWater_MembraneCell", 1.0f));
     _water->addUniform(new osg::Uniform("osgWater_LookupPlanes", osg::Vec2f(1.0f, 1.0f)));
@@ -178,6 +179,7 @@ void WaterStateSets::applyWind(detail::SpectralWaves* wind)
     for (unsigned int c = 0; c < WaveCascades::CASCADES; ++c) scales->setElement(c, wind ? wind->cascadeScale(c) : osg::Vec4f());
     _water->getUniform("osgWater_CascadeCount")->set(wind ? int(wind->cascadeCount()) : 0);
     _water->getUniform("osgWater_CascadeTexels")->set(wind ? float(wind->textureSize()) : 1.0f);
+    _water->getUniform("osgWater_UnresolvedSlopes")->set(wind ? float(wind->unresolvedSlopeVariance()) : 0.0f);
 }
 
 void WaterStateSets::applyTime(const WaterSurface& surface, double t)

@@ -1,4 +1,5 @@
 #include "passes/GlowPasses.h"
+#include "surface/SpectralWaves.h"
 #include "shaders/ProgramLibrary.h"
 #include "frame/PassMath.h"
 #include "frame/ScreenTriangle.h"
@@ -154,12 +155,16 @@ namespace {
 
 // The highlight: view directions within theta of the flat water's mirror direction of the sun v
 // (eye space), theta the width of pow(R.E, e) above 1/1024 widened by twice the steepest slope the
-// waves can reach (a normal tilted by a turns the mirror direction by 2a).
+// waves can reach (a normal tilted by a turns the mirror direction by 2a). Under the wind the lobe
+// is the widest the shader draws: e' = e / (1 + 2 e sigma^2) with every slope roughness (a pixel
+// wider than every tile); where some are drawn instead, the steepest slope's term covers them.
 double highlightCone(const PassContext& ctx, const WaterSurface& surface, osg::Vec3d& v)
 {
     const WaterSettings& s = *ctx.settings;
     const double slope = surface.getMaxSlope();
-    const double lobe = std::acos(std::pow(1.0 / 1024.0, 1.0 / double(s.getGlowExponent())));
+    double e = s.getGlowExponent();
+    if (const detail::SpectralWaves* wind = surface.getSpectralWaves()) e /= 1.0 + 2.0 * e * wind->meanSquareSlope();
+    const double lobe = std::acos(std::pow(1.0 / 1024.0, 1.0 / e));
     const osg::Vec3d L = s.getSunDirection();
     v = osg::Matrixd::transform3x3(osg::Vec3d(L.x(), L.y(), -L.z()), ctx.view);
     v.normalize();

@@ -47,7 +47,8 @@ const std::vector<ShaderConstant>& osgWater::shaderConstants()
         // the debug outputs have no file names: named here, once
         const struct { const char* name; DebugOutput value; } debug[] = {
             { "NONE", DEBUG_NONE }, { "BOTTOM_HIT", DEBUG_BOTTOM_HIT }, { "REFLECTION_LOOKUP", DEBUG_REFLECTION_LOOKUP },
-            { "FRESNEL", DEBUG_FRESNEL }, { "SURFACE", DEBUG_SURFACE }, { "DRAWN_SURFACE", DEBUG_DRAWN_SURFACE }
+            { "FRESNEL", DEBUG_FRESNEL }, { "SURFACE", DEBUG_SURFACE }, { "DRAWN_SURFACE", DEBUG_DRAWN_SURFACE },
+            { "SLOPES", DEBUG_SLOPES }
         };
         for (const auto& d : debug) c.push_back({ std::string("OSGWATER_DEBUG_") + d.name, int(d.value) });
         return c;

@@ -8,7 +8,7 @@ using namespace osgWater;
 using namespace osgWater::detail;
 
 namespace {
-const unsigned int kChannels = 4; // h, dh/dx, dh/dy, 0
+const unsigned int kChannels = 4; // h, dh/dx, dh/dy, |grad h|^2
 
 // Uploads the layers' every mip level, again each time an image changed. OSG's own path for
 // mipmapped array images re-specifies the levels of the immutable storage it made (a GL error),
@@ -73,7 +73,7 @@ void setUpLayers(osg::Texture2DArray& t, unsigned int n, unsigned int layers, GL
 }
 
 SpectralWaves::SpectralWaves(const WaveCascades::Params& params)
-    : _cascades(params), _heightBound(0.0), _slopeBound(0.0), _texture(new osg::Texture2DArray),
+    : _cascades(params), _heightBound(0.0), _slopeBound(0.0), _tilesMeanSquareSlope(0.0), _texture(new osg::Texture2DArray),
       _heights(new osg::Texture2DArray)
 {
     _heightBound = HEIGHT_SIGMAS * std::sqrt(_cascades.binVariance());
@@ -150,6 +150,7 @@ void SpectralWaves::applyTime(double t)
 void SpectralWaves::fill()
 {
     const unsigned int n = _cascades.params().size;
+    _tilesMeanSquareSlope = 0.0;
     for (unsigned int layer = 0; layer < cascadeCount(); ++layer) {
         float* level = reinterpret_cast<float*>(_images[layer]->data());
         const std::vector<WaveCascades::Texel>& texels = _cascades.texels(_layers[layer]);
@@ -159,7 +160,7 @@ void SpectralWaves::fill()
             level[kChannels * i + 0] = texels[i].displacement.z();
             level[kChannels * i + 1] = texels[i].slope.x();
             level[kChannels * i + 2] = texels[i].slope.y();
-            level[kChannels * i + 3] = 0.0f;
+            level[kChannels * i + 3] = texels[i].slope.length2();
         }
         // each level the 2 x 2 average of the one above: texel i of level L covers texels
         // 2^L i .. 2^L (i + 1) of level 0, as GL's mip levels do
@@ -174,9 +175,16 @@ void SpectralWaves::fill()
                     }
             level = next;
         }
+        _tilesMeanSquareSlope += level[3]; // the 1 x 1 level: the tile's mean |grad h|^2
         _images[layer]->dirty();
         _heightImages[layer]->dirty();
     }
+}
+
+double SpectralWaves::meanSquareSlope() const
+{
+    std::lock_guard<std::mutex> guard(_lock);
+    return _tilesMeanSquareSlope + _cascades.unresolvedSlopeVariance();
 }
 
 osg::Vec4f SpectralWaves::cascadeScale(unsigned int layer) const

@@ -3,6 +3,7 @@
 #define OSGWATER_SPECTRALWAVES 1
 
 #include "surface/WaveCascades.h"
+#include <osgWater/Export>
 #include <osg/Referenced>
 #include <osg/Texture2DArray>
 #include <mutex>
@@ -13,10 +14,13 @@ namespace osgWater { namespace detail {
 //! them from (waves.glsl under OSGWATER_WIND). The CPU and the GPU sample the same texels the same
 //! way (bilinear, texel i's centre at the FFT's sample i), so the height query is the drawn surface.
 //!
-//! The texture is a 2D array, one layer per cascade, RGBA32F: the height and its slopes dh/dx,
-//! dh/dy, with mip levels averaged here (the averages of heights and of slopes are the height and
-//! the slopes of the averaged surface), so far water reads a filtered surface.
-class SpectralWaves : public osg::Referenced
+//! The texture is a 2D array, one layer per cascade, RGBA32F: the height, its slopes dh/dx, dh/dy
+//! and |grad h|^2, with mip levels averaged here (the averages of heights and of slopes are the
+//! height and the slopes of the averaged surface), so far water reads a filtered surface. What a
+//! level's texel no longer shows of the slopes under it is its mean |grad h|^2 less the square of its
+//! mean slopes (LEAN mapping's second moments, Olano and Baker 2010): the shading's roughness there,
+//! beside the slopes no cascade holds (unresolvedSlopeVariance).
+class OSGWATER_EXPORT SpectralWaves : public osg::Referenced
 {
 public:
     explicit SpectralWaves(const WaveCascades::Params& params);
@@ -43,6 +47,11 @@ public:
     //! |grad h| stays below this: HEIGHT_SIGMAS standard deviations of the slopes.
     double slopeBound() const { return _slopeBound; }
     double maxPhaseSpeed() const { return _cascades.maxPhaseSpeed(); }
+    //! The slopes' variance no cascade holds: the roughness of water whose texels are all resolved.
+    double unresolvedSlopeVariance() const { return _cascades.unresolvedSlopeVariance(); }
+    //! The water's mean square slope as of the texture's time: its tiles' mean |grad h|^2 (their
+    //! last mip level) plus the unresolved. The roughness of a pixel wider than every tile.
+    double meanSquareSlope() const;
     //! The shortest wave the cascades hold (m): the height query's stepping scale.
     double shortestWave() const;
     static constexpr double HEIGHT_SIGMAS = 6.0;
@@ -55,7 +64,7 @@ private:
     mutable WaveCascades _cascades;
     std::vector<unsigned int> _layers; // the cascades that hold waves, one texture layer each
     std::vector<double> _cascadeBound;
-    double _heightBound, _slopeBound;
+    double _heightBound, _slopeBound, _tilesMeanSquareSlope;
     osg::ref_ptr<osg::Texture2DArray> _texture, _heights;
     std::vector<osg::ref_ptr<osg::Image>> _images, _heightImages;
 };

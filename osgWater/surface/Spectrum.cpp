@@ -59,6 +59,12 @@ spectrum::Jonswap spectrum::jonswap(double windSpeed, double fetch)
     return j;
 }
 
+double spectrum::coxMunkSlopeVariance(double windSpeed)
+{
+    if (!(windSpeed > 0.0) || !std::isfinite(windSpeed)) return 0.0;
+    return 0.003 + 0.00512 * windSpeed;
+}
+
 double spectrum::jonswapSpectrum(double omega, const Jonswap& j)
 {
     if (!(omega > 0.0) || !(j.alpha > 0.0) || !(j.peakOmega > 0.0)) return 0.0;

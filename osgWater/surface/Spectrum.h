@@ -43,6 +43,11 @@ OSGWATER_EXPORT double directionalSpread(double theta, double s);
 //! The mean of cos(theta) under D: s / (s + 1).
 OSGWATER_EXPORT double meanCosine(double s);
 
+//! Cox and Munk's (1954) mean square slope of the sea under a wind of `windSpeed` m/s (clean
+//! surface): 0.003 + 0.00512 U, the slopes of every wave down to the capillaries together, measured
+//! from the sun's glitter. 0 without wind (no waves at all).
+OSGWATER_EXPORT double coxMunkSlopeVariance(double windSpeed);
+
 //! Everything that sets the spectrum of a surface's wind waves, in physical units.
 struct WindSea {
     double windSpeed = 5.0;     //!< m/s at 10 m

@@ -56,6 +56,26 @@ double integrate(double a, double b, const spectrum::WindSea& sea, const spectru
     return sum * step;
 }
 
+// the wavenumber (rad/m) above which the spectrum's slopes, summed from its longest waves, exceed
+// `total`: trapezoids in log k from a thousandth of the peak's wavenumber up to `top`; `top` if they
+// never do
+double slopesReach(double total, double top, const spectrum::WindSea& sea, const spectrum::Jonswap& j)
+{
+    const double from = 1e-3 * spectrum::wavenumber(j.peakOmega, sea.depth);
+    if (!(from > 0.0) || !(top > from)) return top;
+    const int n = 4000;
+    const double step = std::log(top / from) / n;
+    double held = 0.0, before = 0.0;
+    for (int i = 0; i < n; ++i) {
+        const double k0 = from * std::exp(i * step), k1 = from * std::exp((i + 1) * step);
+        const double a = omnidirectional(k0, sea, j) * k0 * k0 * k0, b = omnidirectional(k1, sea, j) * k1 * k1 * k1;
+        before = held;
+        held += 0.5 * (a + b) * step; // k^2 F(k) dk = k^3 F(k) dlog k
+        if (held >= total) return k0 * std::exp(step * (total - before) / (held - before));
+    }
+    return top;
+}
+
 // the tile whose texels give a wave of wavenumber k exactly SAMPLES_PER_WAVE samples
 double tileFor(double kHigh, unsigned int size)
 {
@@ -94,7 +114,7 @@ std::vector<CascadeBand> WaveCascades::chooseBands(const spectrum::WindSea& sea,
     // a band's top over its bottom: its longest wave still fits twice in its tile once the tile
     // is shrunk to keep its repeats apart (below)
     const double maxRatio = kSmallestTileScale * size / (2.0 * SAMPLES_PER_WAVE);
-    const double shortest = kTwoPi / SHORTEST_WAVE;
+    const double shortest = kTwoPi / shortestWave(sea);
 
     // the first: a tile larger than the water (and than a few peak waves), all it resolves
     CascadeBand first;
@@ -158,6 +178,19 @@ std::vector<CascadeBand> WaveCascades::chooseBands(const spectrum::WindSea& sea,
     return bands;
 }
 
+double WaveCascades::shortestWave(const spectrum::WindSea& sea)
+{
+    const spectrum::Jonswap j = spectrum::jonswap(sea.windSpeed, sea.fetch);
+    if (!(j.alpha > 0.0) || !(sea.depth > 0.0)) return 0.0;
+    return kTwoPi / slopesReach(spectrum::coxMunkSlopeVariance(sea.windSpeed), kTwoPi / SHORTEST_WAVE, sea, j);
+}
+
+double WaveCascades::unresolvedSlopeVariance() const
+{
+    if (!(_binSlopeVariance > 0.0)) return 0.0;
+    return std::max(spectrum::coxMunkSlopeVariance(_params.sea.windSpeed) - _binSlopeVariance, 0.0);
+}
+
 double WaveCascades::bandVariance(const spectrum::WindSea& sea, const std::vector<CascadeBand>& bands)
 {
     const spectrum::Jonswap j = spectrum::jonswap(sea.windSpeed, sea.fetch);
@@ -181,13 +214,15 @@ WaveCascades::WaveCascades(const Params& params)
     auto indexOf = [n](int m, int l) { return unsigned(((l + int(n)) % int(n)) * int(n) + (m + int(n)) % int(n)); };
     std::vector<std::complex<float>> h0(count);
     const double total = bandVariance(_params.sea, _bands);
+    const double top = _bands.empty() ? 0.0 : kTwoPi / shortestWave(_params.sea);
     for (size_t c = 0; c < _bands.size(); ++c) {
         Cascade cascade;
         cascade.band = _bands[c];
         cascade.texels.resize(count);
-        // a band the spectrum leaves (nearly) empty, as a lake's longest waves: no bins, no
-        // transforms, flat texels; nothing reads it
-        if (!(bandVariance(_params.sea, { cascade.band }) >= kNegligibleShare * total)) {
+        // a band the spectrum leaves (nearly) empty, as a lake's longest waves, or one above the
+        // shortest wave held (left over when the others reach it early: its slopes are roughness):
+        // no bins, no transforms, flat texels; nothing reads it
+        if (!(cascade.band.kLow < top * (1.0 - 1e-9)) || !(bandVariance(_params.sea, { cascade.band }) >= kNegligibleShare * total)) {
             _cascades.push_back(std::move(cascade));
             continue;
         }

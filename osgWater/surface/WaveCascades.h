@@ -26,7 +26,7 @@ struct CascadeBand {
 //!
 //! The bands are chosen against repetition inside the water's extent. The first cascade's tile is
 //! larger than the extent, so it never repeats inside it. The others split the rest, up to
-//! SHORTEST_WAVE, into equal shares of half the height variance plus half the slope variance, each a
+//! the shortest wave held (shortestWave), into equal shares of half the height variance plus half the slope variance, each a
 //! tile of its own size, so no one tile's repeat holds most of the heights (seen far off) or of the
 //! slopes (seen close up); the tiles are nudged apart until no two repeat together inside the
 //! extent. Every band's shortest wave spans at least SAMPLES_PER_WAVE texels, so bilinear filtering
@@ -36,7 +36,7 @@ class OSGWATER_EXPORT WaveCascades
 public:
     static constexpr unsigned int CASCADES = 5;
     static constexpr double SAMPLES_PER_WAVE = 4.0;
-    //! Metres: the shortest wave the cascades hold; shorter slopes are the shading's roughness.
+    //! Metres: the shortest wave the cascades may hold (capillaries; see shortestWave).
     static constexpr double SHORTEST_WAVE = 0.02;
 
     struct Params {
@@ -62,6 +62,12 @@ public:
     const Params& params() const { return _params; }
     //! Where each cascade's band lies; empty when the sea has no waves (no wind, no fetch).
     const std::vector<CascadeBand>& bands() const { return _bands; }
+    //! The shortest wave the cascades hold for a sea (m): SHORTEST_WAVE, or a longer one where the
+    //! spectrum's slopes, summed from its longest waves, reach Cox and Munk's total for its wind.
+    //! JONSWAP's k^-3 tail, scaled by a short fetch's large alpha, would hold up to twice the slopes
+    //! the sea shows down to 2 cm; what Cox and Munk measured beyond the waves held is the shading's
+    //! roughness (unresolvedSlopeVariance). 0 without waves.
+    static double shortestWave(const spectrum::WindSea& sea);
     //! The bands for a sea over an extent (what the constructor uses).
     static std::vector<CascadeBand> chooseBands(const spectrum::WindSea& sea, double extent, unsigned int size);
 
@@ -94,6 +100,9 @@ public:
     double binVariance() const { return _binVariance; }
     //! The slopes' variance the bins hold, |grad h|^2 on average: sum of k^2 S(k) dk^2.
     double binSlopeVariance() const { return _binSlopeVariance; }
+    //! The slopes' variance no bin holds: Cox and Munk's total for the wind less binSlopeVariance,
+    //! never below 0; 0 without bins. The shading's roughness where every texel is resolved.
+    double unresolvedSlopeVariance() const;
     //! The fastest phase speed omega / k of any bin (m/s): the longest wave's. 0 without bins.
     double maxPhaseSpeed() const { return _maxPhaseSpeed; }
     //! The spectrum's integral over the bands, sum of int S(k) d^2k (m^2).
