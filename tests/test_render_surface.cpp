@@ -181,10 +181,10 @@ TEST(RenderSurface, EachFragmentShadesWhereItsRayMeetsTheWaves)
         water->getSurface()->setWaveModel(model);
         water->setDebugOutput(DEBUG_SURFACE);
         h.setScene(water.get());
-        // the wind's waves run down to 2 cm ripples, which a grazing pixel (4 cm across at 12 m)
-        // crosses several times between the window's samples: there the search finds a crossing,
-        // not always the first (10.5% of pixels over 1 cm off, median 0.18 mm). Seen from 3 m at
-        // 45 degrees each pixel's ray crosses them once
+        // the wind's waves run down to 6 cm ripples, which a grazing pixel (4 cm across at 12 m)
+        // crosses several times between the window's two samples: there the search finds a
+        // crossing, not always the first (at the sum's view, 8.6% of pixels over 1 cm off, median
+        // 0.11 mm). Seen from 3 m at 45 degrees each pixel's ray crosses them once
         if (model == WaterSurface::WAVES_SUM) h.lookAt(osg::Vec3d(6, -36, 2), osg::Vec3d(2, -24, -1.5));
         else h.lookAt(osg::Vec3d(6, -36, 3), osg::Vec3d(5, -31, -1.5));
         h.frame(t);
