@@ -6,6 +6,7 @@
 #include <osgUtil/IntersectionVisitor>
 #include <osgUtil/LineSegmentIntersector>
 #include "UpdateTraversal.h"
+#include "WarnCapture.h"
 #include <gtest/gtest.h>
 #include <atomic>
 #include <cmath>
@@ -83,6 +84,29 @@ TEST(Queries, HeightAndNormalFollowTheLastFramesTime)
     osg::Vec3d n;
     EXPECT_EQ(water->getSurfaceHeightAt(1.0, 2.0, &n), 1.5);
     EXPECT_EQ(n, osg::Vec3d(0.0, 0.0, 1.0));
+}
+
+// A point that is no place (NaN or infinite coordinates) gets the level water's answer, under
+// either wave model, and the user is told once, not once a query
+TEST(Queries, NoPlaceAnswersTheLevelAndTheUpNormalAndSaysSoOnce)
+{
+    for (WaterSurface::WaveModel model : { WaterSurface::WAVES_SUM, WaterSurface::WAVES_WIND }) {
+        osg::ref_ptr<WaterNode> water = new WaterNode;
+        water->getSurface()->setLevel(2.5);
+        water->getSurface()->setWaveModel(model);
+        ScopedWarnCapture warnings;
+        const double places[][2] = { { NAN, 1.0 }, { 1.0, INFINITY }, { -INFINITY, NAN } };
+        for (const auto& p : places) {
+            osg::Vec3d n;
+            EXPECT_EQ(water->getSurfaceHeightAt(p[0], p[1], 3.0, &n), 2.5) << p[0] << ", " << p[1];
+            EXPECT_EQ(n, osg::Vec3d(0.0, 0.0, 1.0)) << p[0] << ", " << p[1];
+        }
+        const std::string said = warnings.str();
+        EXPECT_NE(said.find("no place"), std::string::npos) << said;
+        EXPECT_EQ(said.find("no place"), said.rfind("no place")) << "said once: " << said;
+        // a place still gets the waves
+        EXPECT_NE(water->getSurfaceHeightAt(1.0, 2.0, 3.0), 2.5);
+    }
 }
 
 TEST(Queries, QueriesAreSafeWhileFramesAdvance)

@@ -93,7 +93,8 @@ std::vector<Wave> osgWater::defaultWaves()
 
 WaterSurface::WaterSurface()
     : _level(0.0), _size(100.0f), _center(0.0f, 0.0f), _resolution(49), _layout(MESH_EYE_RINGS), _waves(defaultWaves()),
-      _model(WAVES_SUM), _uniformMesh(new osg::Geode), _revision(0), _stale(true), _waveSlope(slopeBound(_waves))
+      _model(WAVES_SUM), _uniformMesh(new osg::Geode), _revision(0), _stale(true), _waveSlope(slopeBound(_waves)),
+      _saidNoPlace(false)
 {
 }
 
@@ -102,7 +103,7 @@ WaterSurface::~WaterSurface() = default;
 WaterSurface::WaterSurface(const WaterSurface& o, const osg::CopyOp& copyop)
     : osg::Geode(o, copyop), _level(o._level), _size(o._size), _center(o._center), _resolution(o._resolution),
       _layout(o._layout), _waves(o._waves), _model(o._model), _wind(o._wind), _userMesh(o._userMesh), _uniformMesh(new osg::Geode), _revision(0), _stale(true),
-      _waveSlope(o._waveSlope)
+      _waveSlope(o._waveSlope), _saidNoPlace(false)
 {
 }
 
@@ -377,8 +378,18 @@ float WaterSurface::wrappedPhase(unsigned int i, double t) const
     return float(p);
 }
 
+bool WaterSurface::isPlace(double x, double y) const
+{
+    if (std::isfinite(x) && std::isfinite(y)) return true;
+    if (!_saidNoPlace.exchange(true))
+        OSG_WARN << "osgWater::WaterSurface: asked about (" << x << ", " << y
+                 << "), which is no place: answering the level and the up normal (said once)" << std::endl;
+    return false;
+}
+
 double WaterSurface::height(double x, double y, double t) const
 {
+    if (!isPlace(x, y)) return _level;
     if (const detail::SpectralWaves* wind = getSpectralWaves()) return _level + wind->height(x, y, t);
     double h = _level;
     for (unsigned int i = 0; i < _waves.size(); ++i) {
@@ -391,6 +402,7 @@ double WaterSurface::height(double x, double y, double t) const
 
 osg::Vec3d WaterSurface::normal(double x, double y, double t) const
 {
+    if (!isPlace(x, y)) return osg::Vec3d(0.0, 0.0, 1.0);
     if (const detail::SpectralWaves* wind = getSpectralWaves()) return wind->normal(x, y, t);
     double hx = 0.0, hy = 0.0;
     for (unsigned int i = 0; i < _waves.size(); ++i) {
