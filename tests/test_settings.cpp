@@ -111,6 +111,21 @@ TEST(Settings, AbsurdValuesAreClampedWithAWarning)
     EXPECT_NEAR(s->getSunDirection().length(), 1.0f, 1e-6f);
 }
 
+// A quality that is no preset is said and changes nothing (it used to pass silently, leaving the
+// settings to read as custom); custom itself changes nothing quietly
+TEST(Settings, AQualityThatIsNoPresetIsSaidAndChangesNothing)
+{
+    osg::ref_ptr<WaterSettings> s = new WaterSettings;
+    s->setQuality(WaterSettings::QUALITY_EXACT);
+    ScopedWarnCapture warnings;
+    s->setQuality(WaterSettings::Quality(99));
+    EXPECT_EQ(s->getQuality(), WaterSettings::QUALITY_EXACT);
+    EXPECT_NE(warnings.str().find("quality 99"), std::string::npos) << warnings.str();
+    s->setQuality(WaterSettings::QUALITY_CUSTOM);
+    EXPECT_EQ(s->getQuality(), WaterSettings::QUALITY_EXACT);
+    EXPECT_EQ(warnings.str().find("quality -1"), std::string::npos) << warnings.str();
+}
+
 TEST(Settings, SettersBumpTheRevision)
 {
     osg::ref_ptr<WaterSettings> s = new WaterSettings;

@@ -7,6 +7,7 @@
 #include <osgDB/ReadFile>
 #include <osgDB/WriteFile>
 #include <gtest/gtest.h>
+#include "WarnCapture.h"
 #include <cmath>
 
 using namespace osgWater;
@@ -78,6 +79,21 @@ TEST(WaterTypes, PresetsLookLikeTheirNames)
     EXPECT_GT(seaColor.y(), seaColor.x());
     applyWaterType(*s, *pond);
     EXPECT_LT(s->getBodyColor().z(), s->getBodyColor().x());
+}
+
+// By name: a known preset applies; a typo is said, with the names there are, and changes nothing
+// (it used to be a null pointer for the caller to dereference)
+TEST(WaterTypes, AnUnknownNameIsSaidAndKeepsTheSettings)
+{
+    osg::ref_ptr<WaterSettings> s = new WaterSettings;
+    EXPECT_TRUE(applyWaterType(*s, "tropical-sea"));
+    EXPECT_EQ(s->getWaterModel(), WaterSettings::WATER_PER_CHANNEL);
+    EXPECT_EQ(s->getAbsorption(), findWaterType("tropical-sea")->optics.absorption);
+    ScopedWarnCapture warnings;
+    EXPECT_FALSE(applyWaterType(*s, "clear-lak"));
+    EXPECT_NE(warnings.str().find("clear-lak"), std::string::npos) << warnings.str();
+    EXPECT_NE(warnings.str().find(waterTypeNames()), std::string::npos) << warnings.str();
+    EXPECT_EQ(s->getAbsorption(), findWaterType("tropical-sea")->optics.absorption); // kept
 }
 
 TEST(WaterTypes, TheThesisModelIsOneKAndTheWaterColour)

@@ -46,7 +46,7 @@ osg::ref_ptr<osg::Switch> addPond(osgWater::WaterNode* lake, const osg::Vec2d& a
     // its water: a murky garden pond between the walls, with small ripples of its own
     osg::ref_ptr<osgWater::WaterNode> pond = new osgWater::WaterNode;
     pond->setName("pond");
-    osgWater::applyWaterType(*pond->getSettings(), *osgWater::findWaterType("murky-pond"));
+    osgWater::applyWaterType(*pond->getSettings(), "murky-pond");
     osgWater::WaterSurface* s = pond->getSurface();
     s->setSize(side - 2 * wall);
     s->setCenter(osg::Vec2(float(at.x()), float(at.y())));

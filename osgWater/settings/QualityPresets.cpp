@@ -2,6 +2,7 @@
 // the frontier osgwaterbench measures (its preset rows in docs/BENCHMARKS.md give their ratios
 // and errors). BALANCED is the defaults.
 #include <osgWater/WaterSettings>
+#include <osg/Notify>
 
 using namespace osgWater;
 
@@ -48,7 +49,12 @@ SpeedSettings speedSettingsOf(const WaterSettings& s)
 
 void WaterSettings::setQuality(Quality q)
 {
-    if (q < QUALITY_FAST || q > QUALITY_EXACT) return;
+    if (q == QUALITY_CUSTOM) return; // "as they are": nothing to set
+    if (q < QUALITY_FAST || q > QUALITY_EXACT) {
+        OSG_WARN << "osgWater::WaterSettings: quality " << int(q)
+                 << " is no preset (fast, balanced, exact); the settings are kept" << std::endl;
+        return;
+    }
     const SpeedSettings& p = kPresets[q];
     setRefractionLookup(p.lookup);
     setReflectionLookup(p.reflection);

@@ -10,6 +10,7 @@
 //    al., J. Geophys. Res. 108 (2003)); scattering b_p(l) = b_p(550) (550 / l); backscattered share
 //    0.0183, Petzold's (1972) average particle phase function as tabulated by Mobley (1994).
 #include <osgWater/WaterTypes>
+#include <osg/Notify>
 #include <osgWater/WaterSettings>
 #include <cmath>
 
@@ -84,4 +85,16 @@ void osgWater::applyWaterType(WaterSettings& s, const WaterType& type)
     s.setAbsorption(type.optics.absorption);
     s.setScattering(type.optics.scattering);
     s.setBackscattering(type.optics.backscattering);
+}
+
+bool osgWater::applyWaterType(WaterSettings& s, const std::string& name)
+{
+    const WaterType* type = findWaterType(name);
+    if (!type) {
+        OSG_WARN << "osgWater: no water type \"" << name << "\" (there are " << waterTypeNames()
+                 << "); the settings are kept" << std::endl;
+        return false;
+    }
+    applyWaterType(s, *type);
+    return true;
 }
