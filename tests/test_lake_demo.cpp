@@ -14,6 +14,8 @@
 #include <osg/io_utils>
 #include <cmath>
 #include <cstdlib>
+#include <fstream>
+#include <sstream>
 
 namespace {
 
@@ -98,6 +100,36 @@ bool waterPoint(int x, int y, osg::Vec3d& hit)
         REQUIRE_GL(p);                                         \
         ASSERT_TRUE(runDemo(b, second, why)) << why;           \
     }
+
+// What the demo says of the frames it times is what it timed, and a size it cannot render is
+// refused with a message, not an FBO error
+TEST(LakeDemo, ItTimesTheFramesAskedForAndRefusesAnImpossibleSize)
+{
+    ASSERT_TRUE(std::getenv("DISPLAY")) << "DISPLAY is not set (scripts/with-display.sh sets one)";
+    const std::string log = std::string(OSGWATER_TEST_TMP) + "/lake_frames_" + std::to_string(getpid()) + ".log";
+    const std::string png = std::string(OSGWATER_TEST_TMP) + "/lake_frames_" + std::to_string(getpid()) + ".png";
+    auto run = [&](const std::string& extra) {
+        const std::string cmd = std::string("\"") + OSGWATER_LAKE_APP + "\" \"" + OSGWATER_LAKE_SCENE +
+                                "\" --headless --no-hud --caustics-size 64 --screenshot \"" + png + "\" " + extra +
+                                " > \"" + log + "\" 2>&1";
+        const int rc = std::system(cmd.c_str());
+        std::ifstream in(log);
+        std::stringstream text;
+        text << in.rdbuf();
+        return std::make_pair(rc, text.str());
+    };
+    const auto two = run("--size 64 48 --frames 2");
+    EXPECT_EQ(two.first, 0) << two.second;
+    EXPECT_NE(two.second.find("median over 2 alternating blocks of the mean of 1 frame:"), std::string::npos) << two.second;
+    const auto ten = run("--size 64 48 --frames 10");
+    EXPECT_NE(ten.second.find("median over 5 alternating blocks of the mean of 2 frames:"), std::string::npos) << ten.second;
+    const auto none = run("--size 0 0");
+    EXPECT_NE(none.first, 0) << none.second;
+    EXPECT_NE(none.second.find("--size 0 0: expected 16 to 8192 pixels per side"), std::string::npos) << none.second;
+    EXPECT_EQ(none.second.find("FBO"), std::string::npos) << none.second;
+    std::remove(log.c_str());
+    std::remove(png.c_str());
+}
 
 TEST(LakeDemo, TreesAreMirroredBelowTheShoreline)
 {

@@ -18,6 +18,7 @@
 #include <osgViewer/ViewerEventHandlers>
 #include <osg/Switch>
 #include <osg/Timer>
+#include <algorithm>
 #include <cstdio>
 #include <functional>
 #include <map>
@@ -80,7 +81,8 @@ int runHeadless(osgViewer::Viewer& viewer, osg::Switch* scenes, osgWater::WaterN
     double t = o.time;
     const double dt = 1.0 / 60.0;
     // alternating blocks, so drifts in machine load hit every configuration alike
-    const int blocks = configs.size() > 1 ? 5 : 1, perBlock = std::max(o.frames / blocks, 1);
+    // the frames asked for, in up to 5 alternating blocks (fewer when fewer frames are asked for)
+    const int blocks = configs.size() > 1 ? std::min(5, o.frames) : 1, perBlock = std::max(o.frames / blocks, 1);
     for (int b = 0; b < blocks; ++b)
         for (size_t which = 0; which < configs.size(); ++which) {
             configs[which].select();
@@ -116,7 +118,8 @@ int runHeadless(osgViewer::Viewer& viewer, osg::Switch* scenes, osgWater::WaterN
               << ", caustics " << describeCaustics(*water, water->getViewReport(viewer.getCamera())) << std::endl;
     auto frameMs = [&](const Configuration& c) { return osgWaterApps::medianOfBlockMeans(c.ms, size_t(perBlock)); };
     const double first = frameMs(configs[0]), last = frameMs(configs.back());
-    std::printf("frame time, median over %d alternating blocks of the mean of %d frames:\n", blocks, perBlock);
+    std::printf("frame time, median over %d alternating blocks of the mean of %d frame%s:\n", blocks, perBlock,
+                perBlock == 1 ? "" : "s");
     for (const Configuration& c : configs) {
         const double m = frameMs(c);
         std::printf("  %-32s %8.2f ms", c.name.c_str(), m);
