@@ -358,6 +358,18 @@ struct CausticsAgainstReference {
     }
 };
 
+// the sun the caustics tests light the water by (from the lake's side, 30 degrees off the zenith),
+// the caustics texture's 128 texels and the photon grid; the sun's direction, normalised
+osg::Vec3 sunOverTheCaustics(osgWater::WaterSettings& s, int photonGrid)
+{
+    osg::Vec3 sun(0.3f, 0.4f, 0.87f);
+    sun.normalize();
+    s.setSunDirection(sun);
+    s.setCausticsResolution(128);
+    s.setPhotonGridSize(photonGrid);
+    return sun;
+}
+
 }
 
 TEST(BenchCaustics, OnABeachUnderWavesTheCausticsAreWithinTenPercentOfThePhotonReference)
@@ -372,12 +384,7 @@ TEST(BenchCaustics, OnABeachUnderWavesTheCausticsAreWithinTenPercentOfThePhotonR
     surface->setSize(40.0f);
     surface->setResolution(9);
     surface->setWaves({ testing_gl::makeWave(1.0f, 0.3f, 3.0f, 0.04f), testing_gl::makeWave(0.2f, 1.0f, 2.0f, 0.03f) });
-    osgWater::WaterSettings* s = water->getSettings();
-    osg::Vec3 sun(0.3f, 0.4f, 0.87f);
-    sun.normalize();
-    s->setSunDirection(sun);
-    s->setCausticsResolution(128);
-    s->setPhotonGridSize(256);
+    const osg::Vec3 sun = sunOverTheCaustics(*water->getSettings(), 256);
     const auto bedZ = [](float x) { return 0.2f * (x - 4.0f); };
     water->addChild(testing_gl::emissiveQuad(osg::Vec3(-20, -20, bedZ(-20)), osg::Vec3(20, -20, bedZ(20)),
                                              osg::Vec3(20, 20, bedZ(20)), osg::Vec3(-20, 20, bedZ(-20)),
@@ -409,12 +416,7 @@ TEST(BenchCaustics, UnderTheWindsWavesTheCausticsPatternIsThePhotonReferences)
     breeze.fetch = 140.0f;
     surface->setWind(breeze);
     surface->setWaveModel(osgWater::WaterSurface::WAVES_WIND);
-    osgWater::WaterSettings* s = water->getSettings();
-    osg::Vec3 sun(0.3f, 0.4f, 0.87f);
-    sun.normalize();
-    s->setSunDirection(sun);
-    s->setCausticsResolution(128);
-    s->setPhotonGridSize(512);
+    const osg::Vec3 sun = sunOverTheCaustics(*water->getSettings(), 512);
     water->addChild(testing_gl::emissiveQuad(osg::Vec3(-4, -4, -2), osg::Vec3(4, -4, -2), osg::Vec3(4, 4, -2),
                                              osg::Vec3(-4, 4, -2), osg::Vec4(1, 1, 1, 1)));
     probe.camera()->setViewMatrixAsLookAt(osg::Vec3d(0, -10, 6), osg::Vec3d(0, 0, 0), osg::Vec3d(0, 0, 1));
