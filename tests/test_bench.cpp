@@ -18,6 +18,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
+#include <sstream>
 
 using namespace bench;
 
@@ -516,6 +517,67 @@ TEST(Osgwaterbench, QuickRunWritesValidJson)
     std::string header;
     ASSERT_TRUE(std::getline(csv, header));
     EXPECT_NE(header.find("refraction_px_p99"), std::string::npos);
+}
+
+namespace {
+
+std::string fileText(const std::string& file)
+{
+    std::ifstream in(file);
+    return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
+// the page less its height-query rate, which every run measures again
+std::string pageWithoutRates(const std::string& file)
+{
+    std::istringstream in(fileText(file));
+    std::string line, kept;
+    while (std::getline(in, line))
+        if (line.rfind("- Height queries", 0) != 0) kept += line + '\n';
+    return kept;
+}
+
+// `osgwaterbench --quick` into `out` with a resume key; its log
+std::string quickRun(const std::string& out, const std::string& key)
+{
+    const std::string log = out + "-" + key + ".log";
+    const std::string cmd = std::string("'") + OSGWATER_BENCH_APP + "' --quick --scene '" + OSGWATER_LAKE_SCENE +
+                            "' --views '" + OSGWATER_LAKE_VIEWS + "' --out '" + out + "' --docs '" + out +
+                            "/docs' --resume " + key + " > '" + log + "' 2>&1";
+    EXPECT_EQ(std::system(cmd.c_str()), 0) << "see " << log;
+    return fileText(log);
+}
+
+}
+
+// A run cut short goes on where it stopped: what a run of the same build finished is taken, not
+// measured again, and the tables it writes are the ones the first run wrote.
+TEST(Osgwaterbench, ARunOfTheSameBuildTakesWhatTheLastFinishedAndWritesTheSameTables)
+{
+    const std::string out = std::string(OSGWATER_TEST_TMP) + "/bench-resume";
+    std::system(("rm -rf '" + out + "'").c_str());
+    const std::string first = quickRun(out, "build-a");
+    EXPECT_EQ(first.find("kept from an earlier run"), std::string::npos) << first;
+    const std::string json = fileText(out + "/results.json"), page = pageWithoutRates(out + "/docs/BENCHMARKS.md");
+    ASSERT_NE(page.find("| one-step |"), std::string::npos);
+
+    const std::string again = quickRun(out, "build-a");
+    EXPECT_NE(again.find("ablation: kept from an earlier run"), std::string::npos) << again;
+    EXPECT_NE(again.find("default: kept from an earlier run"), std::string::npos) << again;
+    EXPECT_NE(again.find("one-step: kept from an earlier run"), std::string::npos) << again;
+    EXPECT_EQ(again.find(" ms  plain "), std::string::npos) << "measured again:\n" << again;
+    EXPECT_EQ(fileText(out + "/results.json"), json);
+    EXPECT_EQ(pageWithoutRates(out + "/docs/BENCHMARKS.md"), page);
+
+    // cut short after the first technique: the second is measured, the first taken
+    std::remove((out + "/resume/technique-one-step.json").c_str());
+    const std::string cut = quickRun(out, "build-a");
+    EXPECT_NE(cut.find("default: kept from an earlier run"), std::string::npos) << cut;
+    EXPECT_NE(cut.find("one-step                 high overview"), std::string::npos) << cut;
+
+    // another build measures everything afresh
+    const std::string other = quickRun(out, "build-b");
+    EXPECT_EQ(other.find("kept from an earlier run"), std::string::npos) << other;
 }
 
 TEST(Osgwaterbench, MissingSceneFileIsAClearErrorAndNonZeroExit)

@@ -12,7 +12,7 @@ namespace {
 const char* kUsage =
     "usage: osgwaterbench --scene FILE --views FILE [--size WxH] [--out DIR] [--techniques LIST]\n"
     "                     [--docs DIR] [--frames N] [--photons N] [--quick]\n"
-    "                     [--ablation-rounds N] [--ablation-only]\n"
+    "                     [--ablation-rounds N] [--ablation-only] [--resume KEY]\n"
     "       osgwaterbench --fresnel-figure DIR\n"
     "  --scene FILE       .osgt/.osgb with an osgWater::WaterNode, or any model (water added at z = 0)\n"
     "  --views FILE       one view per line: ex ey ez cx cy cz ux uy uz [t] [# name]\n"
@@ -24,6 +24,9 @@ const char* kUsage =
     "  --photons N        photons of the caustics reference (default 4000000)\n"
     "  --ablation-rounds N  alternating rounds of the ablation table (default 3, 0: none)\n"
     "  --ablation-only    the ablation table alone (timing; no techniques, no reference)\n"
+    "  --resume KEY       keep each finished technique and the ablation under OUT/resume, and take\n"
+    "                     those a run with the same KEY and options finished instead of measuring\n"
+    "                     them again (KEY names the build: scripts/bench.sh gives the sources' trees)\n"
     "  --fresnel-figure DIR  only write DIR/FRESNEL.md and DIR/fresnel-approximations.png (the\n"
     "                     reciprocal-power Fresnel fit) and exit\n"
     "  --quick            smoke run: 96x64, first view, default and one-step, 3 frames, 20000 photons\n";
@@ -40,7 +43,11 @@ bool number(const char* s, double& out)
 bool BenchOptions::read(int argc, char** argv, std::string& error)
 {
     bool sizeGiven = false, framesGiven = false, photonsGiven = false;
-    for (int i = 0; i < argc; ++i) commandLine += (i ? " " : "") + std::string(i ? argv[i] : "osgwaterbench");
+    // the command as the docs show it: the resume key names a build, not a measurement
+    for (int i = 0; i < argc; ++i) {
+        if (i > 0 && std::string(argv[i]) == "--resume") { ++i; continue; }
+        commandLine += (i ? " " : "") + std::string(i ? argv[i] : "osgwaterbench");
+    }
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
         auto value = [&](std::string& out) {
@@ -64,6 +71,7 @@ bool BenchOptions::read(int argc, char** argv, std::string& error)
         else if (a == "--docs") { if (!value(docs)) return false; }
         else if (a == "--fresnel-figure") { if (!value(fresnelFigure)) return false; }
         else if (a == "--techniques") { if (!value(techniques)) return false; }
+        else if (a == "--resume") { if (!value(resumeKey)) return false; }
         else if (a == "--size") {
             if (!value(v)) return false;
             if (std::sscanf(v.c_str(), "%dx%d", &width, &height) != 2 || width < 1 || height < 1 || width > 8192 || height > 8192) {

@@ -7,6 +7,7 @@ namespace bench {
 
 struct BenchOptions {
     std::string scene, viewsFile, out = "bench-out", techniques, docs, commandLine;
+    std::string resumeKey;         //!< --resume KEY: finished work kept and taken again (see ResumeCache)
     std::string fresnelFigure;     //!< --fresnel-figure DIR: the Fresnel fit's figure and table alone
     int width = 1280, height = 720;
     int frames = 30;               //!< timed frames per technique and view (>= 30 unless --quick)

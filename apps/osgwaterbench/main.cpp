@@ -7,6 +7,7 @@
 #include "FresnelFigure.h"
 #include "Ablation.h"
 #include "BenchOptions.h"
+#include "ResumeCache.h"
 #include "Probe.h"
 #include "Report.h"
 #include "Techniques.h"
@@ -240,9 +241,18 @@ int main(int argc, char** argv)
         new osgWater::WaterSettings(*water->getSettings(), osg::CopyOp::DEEP_COPY_ALL);
 
     // the ablation: every effect off in turn, the skips off, the presets, timed in one run
+    const ResumeCache kept(o.out + "/resume", o.resumeKey, o);
     Ablation ablation;
     if (o.ablationRounds > 0) {
-        ablation = runAblation(timing, scenes.get(), *water, views, *base, o.ablationRounds, o.quick ? 2 : 5);
+        if (kept.loadAblation(ablation))
+            std::cout << "ablation: kept from an earlier run of this build" << std::endl;
+        else {
+            ablation = runAblation(timing, scenes.get(), *water, views, *base, o.ablationRounds, o.quick ? 2 : 5);
+            if (!kept.saveAblation(ablation, error)) {
+                std::cerr << "error: " << error << std::endl;
+                return 1;
+            }
+        }
         if (!writeAblationCsv(o.out + "/ablation.csv", ablation, error)) {
             std::cerr << "error: " << error << std::endl;
             return 1;
@@ -266,9 +276,17 @@ int main(int argc, char** argv)
     std::cout << "reference: " << waterCasters.begin()->second->describe() << std::endl;
 
     std::vector<Record> records;
-    std::vector<ViewErrors> errors;
     std::vector<Summary> summaries;
     for (const Technique& tech : techniques) {
+        std::vector<Record> techRecords;
+        Summary summary;
+        if (kept.loadTechnique(tech.name, techRecords, summary)) {
+            std::cout << tech.name << ": kept from an earlier run of this build" << std::endl;
+            records.insert(records.end(), techRecords.begin(), techRecords.end());
+            summaries.push_back(summary);
+            continue;
+        }
+        std::vector<ViewErrors> errors;
         osg::ref_ptr<osgWater::WaterSettings> s = new osgWater::WaterSettings(*base, osg::CopyOp::DEEP_COPY_ALL);
         tech.apply(*s);
         water->setSettings(s.get());
@@ -377,10 +395,16 @@ int main(int argc, char** argv)
                         r.refractionPx.p99, r.nanPixels, osg::Timer::instance()->delta_s(start, phase), captureAndTraceS,
                         osg::Timer::instance()->delta_s(phase, osg::Timer::instance()->tick()) - captureAndTraceS);
             std::fflush(stdout);
-            records.push_back(r);
+            techRecords.push_back(r);
             errors.push_back(std::move(ve));
         }
-        summaries.push_back(summarize(tech.name, records, errors));
+        summary = summarize(tech.name, techRecords, errors);
+        if (!kept.saveTechnique(tech.name, techRecords, summary, error)) {
+            std::cerr << "error: " << error << std::endl;
+            return 1;
+        }
+        records.insert(records.end(), techRecords.begin(), techRecords.end());
+        summaries.push_back(summary);
     }
     water->setSettings(new osgWater::WaterSettings(*base, osg::CopyOp::DEEP_COPY_ALL));
     surface->setMeshLayout(sceneMesh);
