@@ -10,12 +10,16 @@
 #include <unistd.h>
 #include "../apps/osgwatergenlake/LakeModel.h"
 #include <osgWater/WaterNode>
+#include <osgWater/WaterTypes>
 #include <osgDB/ReadFile>
 #include <osg/io_utils>
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
+#include <utility>
+#include <vector>
 
 namespace {
 
@@ -127,6 +131,71 @@ TEST(LakeDemo, ItTimesTheFramesAskedForAndRefusesAnImpossibleSize)
     EXPECT_NE(none.first, 0) << none.second;
     EXPECT_NE(none.second.find("--size 0 0: expected 16 to 8192 pixels per side"), std::string::npos) << none.second;
     EXPECT_EQ(none.second.find("FBO"), std::string::npos) << none.second;
+    std::remove(log.c_str());
+    std::remove(png.c_str());
+}
+
+// --help lists, for each option that names a value, every name the kit's table for it knows (a
+// value added to the kit shows without touching the demo); --quality applies its preset first, so
+// the options after it come on top, and a name it does not know is refused with the names it knows
+TEST(LakeDemo, ItsHelpListsEveryNameTheKitKnowsAndTheQualityPresetComesFirst)
+{
+    ASSERT_TRUE(std::getenv("DISPLAY")) << "DISPLAY is not set (scripts/with-display.sh sets one)";
+    const std::string log = std::string(OSGWATER_TEST_TMP) + "/lake_help_" + std::to_string(getpid()) + ".log";
+    const std::string png = std::string(OSGWATER_TEST_TMP) + "/lake_help_" + std::to_string(getpid()) + ".png";
+    auto run = [&](const std::string& args) {
+        const std::string cmd = std::string("\"") + OSGWATER_LAKE_APP + "\" " + args + " > \"" + log + "\" 2>&1";
+        const int rc = std::system(cmd.c_str());
+        std::ifstream in(log);
+        std::stringstream text;
+        text << in.rdbuf();
+        return std::make_pair(rc, text.str());
+    };
+    const std::string help = run("--help").second;
+    // the help's entry of an option (to the next option: a long one wraps), and the names a table
+    // lists (split at its separator)
+    auto lineOf = [&](const std::string& option) {
+        const size_t at = help.find("  " + option + " <");
+        return at == std::string::npos ? std::string() : help.substr(at, help.find("\n  -", at) - at);
+    };
+    auto split = [](const std::string& names, const std::string& separator) {
+        std::vector<std::string> out;
+        for (size_t from = 0, to; from <= names.size(); from = to + separator.size()) {
+            to = std::min(names.find(separator, from), names.size());
+            out.push_back(names.substr(from, to - from));
+        }
+        return out;
+    };
+    using S = osgWater::WaterSettings;
+    using F = osgWater::WaterSurface;
+    const std::pair<const char*, std::vector<std::string>> tables[] = {
+        { "--quality", split(S::qualityNames(), "|") },
+        { "--lookup", split(S::refractionLookupNames(), "|") },
+        { "--reflection-lookup", split(S::reflectionLookupNames(), "|") },
+        { "--fresnel", split(S::fresnelModelNames(), "|") },
+        { "--gather", split(S::causticsGatherNames(), "|") },
+        { "--caustics", split(S::causticsMethodNames(), "|") },
+        { "--underwater-model", split(S::underwaterModelNames(), "|") },
+        { "--waves", split(F::waveModelNames(), "|") },
+        { "--mesh", split(F::meshLayoutNames(), "|") },
+        { "--water-type", split(osgWater::waterTypeNames(), ", ") },
+    };
+    for (const auto& table : tables) {
+        const std::string line = lineOf(table.first);
+        ASSERT_FALSE(line.empty()) << table.first << " is not in the help:\n" << help;
+        for (const std::string& name : table.second)
+            EXPECT_NE(line.find(name), std::string::npos) << table.first << " lacks " << name << ": " << line;
+    }
+    const std::string common = std::string("\"") + OSGWATER_LAKE_SCENE + "\" --headless --no-hud --no-compare --frames 2 " +
+                               "--size 64 48 --screenshot \"" + png + "\" ";
+    const auto fast = run(common + "--quality fast");
+    EXPECT_EQ(fast.first, 0) << fast.second;
+    EXPECT_NE(fast.second.find("settings: quality fast, refraction one-step"), std::string::npos) << fast.second;
+    const auto onTop = run(common + "--lookup iterative --quality exact --steps 2");
+    EXPECT_NE(onTop.second.find("settings: quality custom, refraction iterative/2"), std::string::npos) << onTop.second;
+    const auto unknown = run(common + "--quality best");
+    EXPECT_NE(unknown.first, 0);
+    EXPECT_NE(unknown.second.find("--quality best: not one of fast|balanced|exact"), std::string::npos) << unknown.second;
     std::remove(log.c_str());
     std::remove(png.c_str());
 }

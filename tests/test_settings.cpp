@@ -1,10 +1,13 @@
 // WaterSettings: thesis table 1 defaults, and clamping of absurd input with a warning.
 #include <osgWater/WaterSettings>
+#include <osgWater/WaterSurface>
 #include <osg/Notify>
 #include "WarnCapture.h"
 #include <gtest/gtest.h>
 #include <cmath>
 #include <sstream>
+#include <string>
+#include <vector>
 
 using namespace osgWater;
 
@@ -124,6 +127,47 @@ TEST(Settings, AQualityThatIsNoPresetIsSaidAndChangesNothing)
     s->setQuality(WaterSettings::QUALITY_CUSTOM);
     EXPECT_EQ(s->getQuality(), WaterSettings::QUALITY_EXACT);
     EXPECT_EQ(warnings.str().find("quality -1"), std::string::npos) << warnings.str();
+}
+
+// Each enum's list of names (what help texts and messages show) holds one name per value, from the
+// first value to the last, each reading back as its value
+template <typename E>
+void expectEveryValueNamedOnce(const std::string& names, const char* (*nameOf)(E), bool (*fromName)(const std::string&, E&),
+                               E first, E last)
+{
+    std::vector<std::string> listed;
+    std::stringstream in(names);
+    for (std::string name; std::getline(in, name, '|');) listed.push_back(name);
+    ASSERT_EQ(int(listed.size()), int(last) - int(first) + 1) << names;
+    for (int v = int(first); v <= int(last); ++v) {
+        EXPECT_EQ(listed[v - int(first)], nameOf(E(v))) << names;
+        E back;
+        EXPECT_TRUE(fromName(listed[v - int(first)], back) && int(back) == v) << listed[v - int(first)];
+    }
+}
+
+TEST(Settings, EveryNameListHoldsEachValueOnceInOrder)
+{
+    using S = WaterSettings;
+    expectEveryValueNamedOnce(S::fresnelModelNames(), S::fresnelModelName, S::fresnelModelFromName, S::FRESNEL_SCHLICK,
+                              S::FRESNEL_RECIPROCAL);
+    expectEveryValueNamedOnce(S::refractionLookupNames(), S::refractionLookupName, S::refractionLookupFromName, S::ONE_STEP,
+                              S::VIRTUAL_VERTICES);
+    expectEveryValueNamedOnce(S::reflectionLookupNames(), S::reflectionLookupName, S::reflectionLookupFromName,
+                              S::REFLECTION_OFFSET, S::REFLECTION_SEARCH);
+    expectEveryValueNamedOnce(S::underwaterModelNames(), S::underwaterModelName, S::underwaterModelFromName,
+                              S::UNDERWATER_PHYSICAL, S::UNDERWATER_THESIS);
+    expectEveryValueNamedOnce(S::causticsGatherNames(), S::causticsGatherName, S::causticsGatherFromName, S::GATHER_AUTO,
+                              S::GATHER_CPU);
+    expectEveryValueNamedOnce(S::causticsMethodNames(), S::causticsMethodName, S::causticsMethodFromName, S::CAUSTICS_PHOTONS,
+                              S::CAUSTICS_PROCEDURAL_SCREEN);
+    expectEveryValueNamedOnce(S::qualityNames(), S::qualityName, S::qualityFromName, S::QUALITY_FAST, S::QUALITY_EXACT);
+    S::Quality q;
+    EXPECT_FALSE(S::qualityFromName("custom", q)); // a name, but no preset to apply
+    expectEveryValueNamedOnce(WaterSurface::meshLayoutNames(), WaterSurface::meshLayoutName, WaterSurface::meshLayoutFromName,
+                              WaterSurface::MESH_GRID, WaterSurface::MESH_EYE_RINGS);
+    expectEveryValueNamedOnce(WaterSurface::waveModelNames(), WaterSurface::waveModelName, WaterSurface::waveModelFromName,
+                              WaterSurface::WAVES_SUM, WaterSurface::WAVES_WIND);
 }
 
 TEST(Settings, SettersBumpTheRevision)

@@ -10,7 +10,7 @@ using osgWater::WaterSettings;
 std::string describeSettings(const WaterSettings& s)
 {
     std::ostringstream o;
-    o << "refraction " << (!s.getRefractionEnabled() ? "off" : s.getRefractionLookup() == WaterSettings::ITERATIVE ||
+    o << "quality " << WaterSettings::qualityName(s.getQuality()) << ", refraction " << (!s.getRefractionEnabled() ? "off" : s.getRefractionLookup() == WaterSettings::ITERATIVE ||
                                                                          s.getRefractionLookup() == WaterSettings::BRACKETED
                                                                  ? std::string(WaterSettings::refractionLookupName(s.getRefractionLookup())) + "/" +
                                                                        std::to_string(s.getSearchSteps())

@@ -11,26 +11,75 @@ namespace {
 
 using Setters = std::vector<std::function<void(osgWater::WaterSettings&)>>;
 
-// an option naming one of an enum's values by WaterSettings' name table: a setter when given, false
-// with the names it takes when the name is unknown
-template <typename E>
-bool readEnumOption(osg::ArgumentParser& args, const char* option, const char* names,
-                    bool (*fromName)(const std::string&, E&), void (osgWater::WaterSettings::*set)(E), Setters& setters)
-{
-    std::string name;
-    if (!args.read(option, name)) return true;
-    E value;
-    if (!fromName(name, value)) {
-        std::cerr << "error: " << option << " " << names << std::endl;
-        return false;
-    }
-    setters.push_back([set, value](osgWater::WaterSettings& w) { (w.*set)(value); });
-    return true;
-}
-
-}
-
 using osgWater::WaterSettings;
+using osgWater::WaterSurface;
+
+// An option naming one value of one of the kit's enums. --help and the message for a name it does
+// not know both list the kit's own name table, so a value added to the kit shows here untouched.
+struct EnumOption {
+    const char* option;
+    std::string (*names)();
+    const char* help;
+    // takes a name: a setter for the settings, or the name kept for apply(); false if it names nothing
+    std::function<bool(const std::string& name, LakeOptions& o, Setters& setters)> take;
+};
+
+template <typename E>
+std::function<bool(const std::string&, LakeOptions&, Setters&)> setting(bool (*fromName)(const std::string&, E&),
+                                                                       void (WaterSettings::*set)(E))
+{
+    return [fromName, set](const std::string& name, LakeOptions&, Setters& setters) {
+        E value;
+        if (!fromName(name, value)) return false;
+        setters.push_back([set, value](WaterSettings& w) { (w.*set)(value); });
+        return true;
+    };
+}
+
+template <typename E>
+std::function<bool(const std::string&, LakeOptions&, Setters&)> kept(bool (*fromName)(const std::string&, E&),
+                                                                    std::string LakeOptions::*field)
+{
+    return [fromName, field](const std::string& name, LakeOptions& o, Setters&) {
+        E value;
+        if (!fromName(name, value)) return false;
+        o.*field = name;
+        return true;
+    };
+}
+
+// --quality first: a preset sets the speed settings, and the options after it come on top of it
+const std::vector<EnumOption>& enumOptions()
+{
+    static const std::vector<EnumOption> options = {
+        { "--quality", WaterSettings::qualityNames, "Speed preset; the other options come on top of it (default balanced)",
+          setting(WaterSettings::qualityFromName, &WaterSettings::setQuality) },
+        { "--lookup", WaterSettings::refractionLookupNames, "Refraction lookup technique",
+          setting(WaterSettings::refractionLookupFromName, &WaterSettings::setRefractionLookup) },
+        { "--reflection-lookup", WaterSettings::reflectionLookupNames, "Reflection lookup technique (default search)",
+          setting(WaterSettings::reflectionLookupFromName, &WaterSettings::setReflectionLookup) },
+        { "--fresnel", WaterSettings::fresnelModelNames, "Fresnel model",
+          setting(WaterSettings::fresnelModelFromName, &WaterSettings::setFresnelModel) },
+        { "--gather", WaterSettings::causticsGatherNames,
+          "Caustics photon gather: points from a copied vertex buffer, points reading the photon texture, CPU",
+          setting(WaterSettings::causticsGatherFromName, &WaterSettings::setCausticsGather) },
+        { "--caustics", WaterSettings::causticsMethodNames,
+          "Caustics method: photon splatting (thesis), the area-ratio mesh (DeepWater), procedural (in the bed's space or the screen's)",
+          setting(WaterSettings::causticsMethodFromName, &WaterSettings::setCausticsMethod) },
+        { "--underwater-model", WaterSettings::underwaterModelNames,
+          "Surface seen from below: Snell with total internal reflection, or the thesis's eq. 12",
+          setting(WaterSettings::underwaterModelFromName, &WaterSettings::setUnderwaterModel) },
+        { "--waves", WaterSurface::waveModelNames,
+          "The wave model: the wind's waves (the scene's default) or the thesis's sum of sines (key j)",
+          kept(WaterSurface::waveModelFromName, &LakeOptions::waves) },
+        { "--mesh", WaterSurface::meshLayoutNames, "The surface's mesh: rings around the eye (default) or the thesis's uniform grid",
+          kept(WaterSurface::meshLayoutFromName, &LakeOptions::mesh) },
+    };
+    return options;
+}
+
+}
+
 
 void LakeOptions::describe(osg::ApplicationUsage& u)
 {
@@ -48,15 +97,12 @@ void LakeOptions::describe(osg::ApplicationUsage& u)
     u.addCommandLineOption("--no-hud", "Hide the on-screen text");
     u.addCommandLineOption("--floaters", "Show the buoy and the boat riding the waves (key b)");
     u.addCommandLineOption("--pond", "Show a garden pond on the north rim, a second water above the lake (key p)");
-    u.addCommandLineOption("--lookup <one-step|iterative|plane>", "Refraction lookup technique");
-    u.addCommandLineOption("--reflection-lookup <search|offset|plane>", "Reflection lookup technique (default search)");
+    for (const EnumOption& e : enumOptions())
+        u.addCommandLineOption(std::string(e.option) + " <" + e.names() + ">", e.help);
     u.addCommandLineOption("--calm", "Flat water: the scene's waves off (the wind's and the sum's)");
     u.addCommandLineOption("--wind <m/s>", "The wind's waves, raised by a wind of this speed (0-40) over the lake (its fetch the lake's size); default the scene's, a 5 m/s breeze (keys w, W)");
-    u.addCommandLineOption("--waves <wind|sum>", "The wave model: the wind's waves (the scene's default) or the thesis's sum of sines (key j)");
-    u.addCommandLineOption("--mesh <rings|grid>", "The surface's mesh: rings around the eye (default) or the thesis's uniform grid");
     u.addCommandLineOption("--planes <height> <depth>", "Plane-offset lookups' planes, metres from the level (0: from the scene)");
     u.addCommandLineOption("--steps <n>", "Candidates of the iterative search (1-8)");
-    u.addCommandLineOption("--fresnel <schlick|power|exact|reciprocal>", "Fresnel model");
     u.addCommandLineOption("--reciprocal-power <p>", "Power of the reciprocal Fresnel model 1/(1+E.N)^p (default 6.62)");
     u.addCommandLineOption("--q <q>", "Fresnel exponent");
     u.addCommandLineOption("--water-type <name>", "The water: " + osgWater::waterTypeNames() + " (per-channel absorption and scattering; default clear-lake), or thesis (one k, one colour; the default with --k or --water-color)");
@@ -71,8 +117,6 @@ void LakeOptions::describe(osg::ApplicationUsage& u)
     u.addCommandLineOption("--no-rotation", "Do not rotate the refraction camera (thesis 5.1)");
     u.addCommandLineOption("--thesis-rotation", "Rotate the refraction camera rigidly about O, as the thesis does (not to the apparent eye)");
     u.addCommandLineOption("--no-caustics", "Switch caustics off");
-    u.addCommandLineOption("--gather <auto|copy|texture|cpu>", "Caustics photon gather: points from a copied vertex buffer, points reading the photon texture, CPU");
-    u.addCommandLineOption("--caustics <photons|mesh>", "Caustics method: photon splatting (thesis) or the area-ratio mesh (DeepWater)");
     u.addCommandLineOption("--supersample", "Caustics: the gather drawn four times, jittered by a quarter texel (2x2 supersampling)");
     u.addCommandLineOption("--caustics-tile <metres>", "Tileable caustics over tiles of this side (the waves moved to the nearest that repeat over it)");
     u.addCommandLineOption("--reflective-caustics", "The sun reflected off the water lights what stands above it");
@@ -80,7 +124,6 @@ void LakeOptions::describe(osg::ApplicationUsage& u)
     u.addCommandLineOption("--photons <n>", "Photons per side of the photon grid (default 512)");
     u.addCommandLineOption("--sun <x> <y> <z>", "Direction towards the sun");
     u.addCommandLineOption("--underwater", "Start under water (same as pressing u)");
-    u.addCommandLineOption("--underwater-model <physical|thesis>", "Surface seen from below: Snell with total internal reflection, or the thesis's eq. 12");
     u.addCommandLineOption("--no-glow", "Switch the sun's glow off");
     u.addCommandLineOption("--glow <intensity>", "Glow intensity (default 1)");
     u.addCommandLineOption("--exposure <e>", "Linear light times e before the sRGB encoding (default 1)");
@@ -117,13 +160,11 @@ bool LakeOptions::read(osg::ArgumentParser& args)
     std::string s;
     float f, g, h;
     int n;
-    if (!readEnumOption(args, "--lookup", "one-step|iterative|plane|bracketed|virtual-vertices", WaterSettings::refractionLookupFromName,
-                        &WaterSettings::setRefractionLookup, _setters) ||
-        !readEnumOption(args, "--reflection-lookup", "search|offset|plane", WaterSettings::reflectionLookupFromName,
-                        &WaterSettings::setReflectionLookup, _setters) ||
-        !readEnumOption(args, "--fresnel", "schlick|power|exact|reciprocal", WaterSettings::fresnelModelFromName,
-                        &WaterSettings::setFresnelModel, _setters))
-        return false;
+    for (const EnumOption& e : enumOptions())
+        if (args.read(e.option, s) && !e.take(s, *this, _setters)) {
+            std::cerr << "error: " << e.option << " " << s << ": not one of " << e.names() << std::endl;
+            return false;
+        }
     if (args.read("--steps", n)) _setters.push_back([n](WaterSettings& w) { w.setSearchSteps(n); });
     if (args.read("--planes", f, g)) _setters.push_back([f, g](WaterSettings& w) {
         w.setReflectionPlaneHeight(f);
@@ -151,12 +192,6 @@ bool LakeOptions::read(osg::ArgumentParser& args)
     if (args.read("--no-rotation")) _setters.push_back([](WaterSettings& w) { w.setRefractionCameraRotation(false); });
     if (args.read("--thesis-rotation")) _setters.push_back([](WaterSettings& w) { w.setRefractionCameraApparentEye(false); });
     if (args.read("--no-caustics")) _setters.push_back([](WaterSettings& w) { w.setCausticsEnabled(false); });
-    if (!readEnumOption(args, "--gather", "auto|copy|texture|cpu", WaterSettings::causticsGatherFromName,
-                        &WaterSettings::setCausticsGather, _setters))
-        return false;
-    if (!readEnumOption(args, "--caustics", "photons|mesh|procedural|procedural-screen", WaterSettings::causticsMethodFromName,
-                        &WaterSettings::setCausticsMethod, _setters))
-        return false;
     if (args.read("--supersample")) _setters.push_back([](WaterSettings& w) { w.setCausticsSupersampling(true); });
     args.read("--caustics-tile", causticsTile);
     if (args.read("--calm")) calm = true;
@@ -164,26 +199,9 @@ bool LakeOptions::read(osg::ArgumentParser& args)
         std::cerr << "error: --wind takes a speed in m/s, 0 to 40" << std::endl;
         return false;
     }
-    if (args.read("--waves", waves)) {
-        osgWater::WaterSurface::WaveModel model;
-        if (!osgWater::WaterSurface::waveModelFromName(waves, model)) {
-            std::cerr << "error: --waves wind|sum" << std::endl;
-            return false;
-        }
-    }
-    if (args.read("--mesh", mesh)) {
-        osgWater::WaterSurface::MeshLayout layout;
-        if (!osgWater::WaterSurface::meshLayoutFromName(mesh, layout)) {
-            std::cerr << "error: --mesh rings|grid" << std::endl;
-            return false;
-        }
-    }
     if (args.read("--reflective-caustics")) _setters.push_back([](WaterSettings& w) { w.setReflectiveCaustics(true); });
     if (args.read("--caustics-size", n)) _setters.push_back([n](WaterSettings& w) { w.setCausticsResolution(n); });
     if (args.read("--photons", n)) _setters.push_back([n](WaterSettings& w) { w.setPhotonGridSize(n); });
-    if (!readEnumOption(args, "--underwater-model", "physical|thesis", WaterSettings::underwaterModelFromName,
-                        &WaterSettings::setUnderwaterModel, _setters))
-        return false;
     if (args.read("--no-glow")) _setters.push_back([](WaterSettings& w) { w.setGlowEnabled(false); });
     if (args.read("--glow", f)) _setters.push_back([f](WaterSettings& w) { w.setGlowIntensity(f); });
     if (args.read("--exposure", f)) _setters.push_back([f](WaterSettings& w) { w.setExposure(f); });
@@ -231,9 +249,12 @@ void LakeOptions::apply(osgWater::WaterNode& water) const
 std::string findSceneFile(const std::string& name)
 {
     if (osgDB::fileExists(name)) return name;
-    for (const std::string dir : { std::string(OSGWATER_SOURCE_DATA_DIR), std::string(OSGWATER_INSTALL_DATA_DIR) }) {
+    // installed: share/osgWater/data beside the program's own prefix, wherever that was moved (Linux
+    // names the running program in /proc); built: the source tree's data/
+    const std::string installed = osgDB::getFilePath(osgDB::getRealPath("/proc/self/exe")) + "/" + OSGWATER_DATA_FROM_BIN;
+    for (const std::string& dir : { installed, std::string(OSGWATER_SOURCE_DATA_DIR) }) {
         const std::string base = osgDB::getSimpleFileName(name);
-        if (osgDB::fileExists(dir + "/" + base)) return dir + "/" + base;
+        if (osgDB::fileExists(dir + "/" + base)) return osgDB::getRealPath(dir + "/" + base);
     }
     return std::string();
 }

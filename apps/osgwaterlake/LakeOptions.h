@@ -40,5 +40,6 @@ private:
     std::vector<std::function<void(osgWater::WaterSettings&)>> _setters;
 };
 
-//! The scene file: as given, else under the source tree's data/ or the installed share/osgWater/.
+//! The scene file: as given, else in the installed share/osgWater/data/ beside the program, else in
+//! the source tree's data/.
 std::string findSceneFile(const std::string& name);

@@ -204,6 +204,7 @@ int main(int argc, char** argv)
         std::cerr << "error: scene file " << o.scene << " not found (build first: the lake's OBJ is generated into data/lake/)" << std::endl;
         return 1;
     }
+    std::cout << "scene: " << file << std::endl;
     osg::ref_ptr<osg::Node> loaded = osgDB::readRefNodeFile(file);
     if (!loaded.valid()) {
         std::cerr << "error: could not read " << file << std::endl;

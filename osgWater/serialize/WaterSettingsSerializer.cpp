@@ -24,12 +24,12 @@ static bool readQuality(osgDB::InputStream& is, WaterSettings& s)
 {
     std::string name;
     is >> name;
-    for (WaterSettings::Quality q : { WaterSettings::QUALITY_FAST, WaterSettings::QUALITY_BALANCED, WaterSettings::QUALITY_EXACT })
-        if (name == WaterSettings::qualityName(q)) {
-            s.setQuality(q);
-            return true;
-        }
-    OSG_WARN << "osgWater::WaterSettings: unknown Quality \"" << name << "\", keeping the settings as they are" << std::endl;
+    WaterSettings::Quality q;
+    if (WaterSettings::qualityFromName(name, q))
+        s.setQuality(q);
+    else
+        OSG_WARN << "osgWater::WaterSettings: unknown Quality \"" << name << "\" (not one of "
+                 << WaterSettings::qualityNames() << "), keeping the settings as they are" << std::endl;
     return true;
 }
 

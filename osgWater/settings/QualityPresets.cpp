@@ -2,6 +2,7 @@
 // the frontier osgwaterbench measures (its preset rows in docs/BENCHMARKS.md give their ratios
 // and errors). BALANCED is the defaults.
 #include <osgWater/WaterSettings>
+#include "settings/EnumNames.h"
 #include <osg/Notify>
 
 using namespace osgWater;
@@ -76,12 +77,11 @@ WaterSettings::Quality WaterSettings::getQuality() const
     return QUALITY_CUSTOM;
 }
 
-const char* WaterSettings::qualityName(Quality q)
-{
-    switch (q) {
-    case QUALITY_FAST: return "fast";
-    case QUALITY_BALANCED: return "balanced";
-    case QUALITY_EXACT: return "exact";
-    default: return "custom";
-    }
+namespace {
+// the presets' names in their values' order (QUALITY_CUSTOM, -1, reads as "custom")
+const char* const kQualityNames[] = { "fast", "balanced", "exact" };
 }
+
+const char* WaterSettings::qualityName(Quality q) { return detail::nameOf(kQualityNames, q, "custom"); }
+bool WaterSettings::qualityFromName(const std::string& name, Quality& q) { return detail::valueOf(kQualityNames, name, q); }
+std::string WaterSettings::qualityNames() { return detail::joinedNames(kQualityNames); }

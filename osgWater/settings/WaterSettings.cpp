@@ -178,6 +178,12 @@ bool WaterSettings::causticsMethodFromName(const std::string& name, CausticsMeth
 {
     return valueOf(kCausticsMethodNames, name, m);
 }
+std::string WaterSettings::fresnelModelNames() { return detail::joinedNames(kFresnelNames); }
+std::string WaterSettings::refractionLookupNames() { return detail::joinedNames(kRefractionLookupNames); }
+std::string WaterSettings::reflectionLookupNames() { return detail::joinedNames(kReflectionLookupNames); }
+std::string WaterSettings::underwaterModelNames() { return detail::joinedNames(kUnderwaterModelNames); }
+std::string WaterSettings::causticsGatherNames() { return detail::joinedNames(kCausticsGatherNames); }
+std::string WaterSettings::causticsMethodNames() { return detail::joinedNames(kCausticsMethodNames); }
 void WaterSettings::setReflectionScale(float c) { _reflectionScale = clampOr("reflectionScale", c, 0.0f, 1000.0f, 1.0f); touch(); }
 void WaterSettings::setSearchSteps(int n) { _searchSteps = clampInt("searchSteps", n, 1, 8); touch(); }
 void WaterSettings::setSearchTolerance(float m) { _searchTolerance = clampOr("searchTolerance", m, 0.0f, 10.0f, 0.01f); touch(); }

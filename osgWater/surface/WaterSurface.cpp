@@ -163,6 +163,7 @@ const char* const kMeshLayoutNames[] = { "grid", "rings" };
 const char* const kWaveModelNames[] = { "sum", "wind" };
 }
 
+std::string WaterSurface::meshLayoutNames() { return detail::joinedNames(kMeshLayoutNames); }
 const char* WaterSurface::meshLayoutName(MeshLayout layout) { return detail::nameOf(kMeshLayoutNames, layout, nullptr); }
 
 bool WaterSurface::meshLayoutFromName(const std::string& name, MeshLayout& layout)
@@ -242,6 +243,7 @@ void WaterSurface::setWaveModel(WaveModel model)
     rewaved();
 }
 
+std::string WaterSurface::waveModelNames() { return detail::joinedNames(kWaveModelNames); }
 const char* WaterSurface::waveModelName(WaveModel model) { return detail::nameOf(kWaveModelNames, model, nullptr); }
 
 bool WaterSurface::waveModelFromName(const std::string& name, WaveModel& model)
