@@ -1,4 +1,5 @@
 #include "GLHarness.h"
+#include <osgWater/Offscreen>
 #include <osgWater/WaterTypes>
 #include "optics/Optics.h"
 #include "optics/Srgb.h"
@@ -19,14 +20,7 @@ namespace testing_gl {
 
 osg::ref_ptr<osg::GraphicsContext> createPbuffer(int width, int height, std::string& why)
 {
-    // the same pbuffer the demo uses headless; the tests only add why it failed
-    if (!std::getenv("DISPLAY")) {
-        why = "DISPLAY is not set";
-        return nullptr;
-    }
-    osg::ref_ptr<osg::GraphicsContext> gc = osgWaterApps::createPbuffer(width, height);
-    if (!gc.valid()) why = "pbuffer creation failed on DISPLAY=" + std::string(std::getenv("DISPLAY"));
-    return gc;
+    return osgWater::createOffscreenContext(width, height, &why); // the kit's own, as the demo's
 }
 
 osg::Texture2D* attachFloatTarget(osg::Camera* camera, osg::GraphicsContext* gc, int w, int h, GLenum format)

@@ -382,6 +382,36 @@ TEST(Serialization, TheBinarySeedsReadAsTheirTextTwins)
     }
 }
 
+// Each osgWater object in a .osgb starts with the kit's binary layout number: a file of another
+// layout, or of none, is refused with a message that says so and what to do, never read shifted
+TEST(Serialization, ABinaryFileOfAnotherLayoutIsRefusedWithAMessage)
+{
+    osg::ref_ptr<WaterNode> w = pond();
+    ASSERT_TRUE(osgDB::writeNodeFile(*w, tmp("layout.osgb")));
+    const std::string bytes = slurp(tmp("layout.osgb"));
+    // the stamp, little-endian: layout 1 in the low half of 0x6F57xxxx ("oW")
+    const std::string stamp("\x01\x00\x57\x6F", 4);
+    const size_t at = bytes.find(stamp);
+    ASSERT_NE(at, std::string::npos) << "no layout stamp in the file";
+    ASSERT_TRUE(readWater(tmp("layout.osgb")).valid()) << "this layout's own file did not read";
+
+    std::string other = bytes;
+    other[at] = 2; // layout 2 where the WaterNode starts
+    spit(tmp("layout2.osgb"), other);
+    std::string unstamped = bytes;
+    unstamped.erase(at, 4); // a file from before layouts were numbered
+    spit(tmp("unstamped.osgb"), unstamped);
+    const std::pair<const char*, const char*> cases[] = { { "layout2.osgb", "written in binary layout 2" },
+                                                          { "unstamped.osgb", "before binary layouts were numbered" } };
+    for (const auto& c : cases) {
+        ScopedWarnCapture warnings;
+        EXPECT_FALSE(readWater(tmp(c.first)).valid()) << c.first;
+        EXPECT_NE(warnings.str().find(c.second), std::string::npos) << warnings.str();
+        EXPECT_NE(warnings.str().find("osgWater::WaterNode"), std::string::npos) << warnings.str();
+        EXPECT_NE(warnings.str().find("Write the .osgb again from its .osgt"), std::string::npos) << warnings.str();
+    }
+}
+
 // The wind's waves are kept as the wind's own fields (not arrays of waves), in both formats
 TEST(Serialization, TheWindsWavesRoundTripAsTheirFields)
 {

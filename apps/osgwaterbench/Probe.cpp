@@ -1,6 +1,8 @@
 #include "node/WaterNodeImpl.h"
+#include "offscreen/TextureReadback.h"
 #include "Probe.h"
 #include "../common/FrameTimer.h"
+#include <osgWater/Offscreen>
 #include <osg/GL>
 #include <utility>
 
@@ -35,11 +37,8 @@ Probe::Probe(osgViewer::Viewer* shared) : _viewer(shared), _shared(true)
 
 Probe::Probe(int width, int height)
 {
-    _gc = osgWaterApps::createPbuffer(width, height);
-    if (!_gc.valid()) {
-        _why = "cannot create an off-screen (pbuffer) GL context; run under xvfb-run on a machine without a display";
-        return;
-    }
+    _gc = osgWater::createOffscreenContext(width, height, &_why);
+    if (!_gc.valid()) return;
     _owned = new osgViewer::Viewer;
     _viewer = _owned.get();
     _viewer->setThreadingModel(osgViewer::ViewerBase::SingleThreaded);
@@ -56,18 +55,8 @@ Probe::Probe(int width, int height)
 
 osg::ref_ptr<osg::Image> Probe::read(osg::Texture2D* texture)
 {
-    _gc->makeCurrent(); // stays current: the viewer does not release it between frames
-    osg::Texture::TextureObject* to = texture ? texture->getTextureObject(_gc->getState()->getContextID()) : nullptr;
-    if (!to) return nullptr;
-    osg::ref_ptr<osg::Image> img = new osg::Image;
-    img->allocateImage(texture->getTextureWidth(), texture->getTextureHeight(), 1, GL_RGBA, GL_FLOAT);
-    GLint bound = 0; // restored: osg::State believes it is still bound
-    glGetIntegerv(GL_TEXTURE_BINDING_2D, &bound);
-    glBindTexture(GL_TEXTURE_2D, to->id());
-    glPixelStorei(GL_PACK_ALIGNMENT, 4);
-    glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_FLOAT, img->data());
-    glBindTexture(GL_TEXTURE_2D, GLuint(bound));
-    return img;
+    // the context stays current: the viewer does not release it between frames
+    return osgWater::detail::readTexture(_gc.get(), texture, GL_RGBA, GL_FLOAT);
 }
 
 Estimate Probe::capture(osgWater::WaterNode& water, double t)

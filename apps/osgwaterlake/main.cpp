@@ -9,6 +9,7 @@
 #include "../common/Pond.h"
 #include "../common/FrameTimer.h"
 #include "../common/SceneWater.h"
+#include <osgWater/Offscreen>
 #include <osgDB/FileNameUtils>
 #include <osgDB/ReadFile>
 #include <osgDB/WriteFile>
@@ -108,7 +109,7 @@ int runHeadless(osgViewer::Viewer& viewer, osg::Switch* scenes, osgWater::WaterN
     water->getSettings()->setCausticsGather(gather);
     water->getSettings()->setGlowEnabled(glow);
     if (hud) hud->setNodeMask(~0u);
-    osg::ref_ptr<osg::Image> image = osgWaterApps::captureFrame(viewer, o.time); // the screenshot is at the start time
+    osg::ref_ptr<osg::Image> image = osgWater::renderOffscreenFrame(viewer, o.time); // the screenshot is at the start time
     if (!image.valid() || !osgDB::writeImageFile(*image, o.screenshot)) {
         std::cerr << "error: could not write the screenshot " << o.screenshot << std::endl;
         return 1;

@@ -1,5 +1,6 @@
 // osgDB wrapper of WaterNode (see WaterSettingsSerializer.cpp for how osgDB finds it).
 #include <osgWater/WaterNode>
+#include "serialize/LayoutVersion.h"
 #include <osgDB/ObjectWrapper>
 #include <osgDB/InputStream>
 #include <osgDB/OutputStream>
@@ -10,6 +11,7 @@ using namespace osgWater;
 REGISTER_OBJECT_WRAPPER(osgWater_WaterNode, new osgWater::WaterNode, osgWater::WaterNode,
                         "osg::Object osg::Node osg::Group osgWater::WaterNode")
 {
+    ADD_BINARY_LAYOUT_SERIALIZER("osgWater::WaterNode");
     ADD_OBJECT_SERIALIZER(Settings, osgWater::WaterSettings, NULL);
     ADD_OBJECT_SERIALIZER(Surface, osgWater::WaterSurface, NULL);
 }

@@ -6,6 +6,7 @@
 // written with the digits they need to read back exactly (PreciseSerializer.h).
 #include <osgWater/WaterSettings>
 #include "serialize/PreciseSerializer.h"
+#include "serialize/LayoutVersion.h"
 #include <osgDB/ObjectWrapper>
 #include <osgDB/InputStream>
 #include <osgDB/OutputStream>
@@ -42,6 +43,7 @@ static bool writeQuality(osgDB::OutputStream& os, const WaterSettings& s)
 REGISTER_OBJECT_WRAPPER(osgWater_WaterSettings, new osgWater::WaterSettings, osgWater::WaterSettings,
                         "osg::Object osgWater::WaterSettings")
 {
+    ADD_BINARY_LAYOUT_SERIALIZER("osgWater::WaterSettings");
     ADD_USER_SERIALIZER(Quality);
     ADD_PRECISE_FLOAT_SERIALIZER(AirIOR, 1.0f);
     ADD_PRECISE_FLOAT_SERIALIZER(WaterIOR, 1.333f);

@@ -1,6 +1,7 @@
 // osgDB wrapper of WaterSurface (see WaterSettingsSerializer.cpp for how osgDB finds it).
 #include <osgWater/WaterSurface>
 #include "serialize/PreciseSerializer.h"
+#include "serialize/LayoutVersion.h"
 #include <osgDB/ObjectWrapper>
 #include <osgDB/InputStream>
 #include <osgDB/OutputStream>
@@ -84,6 +85,7 @@ bool writeWind(osgDB::OutputStream& os, const WaterSurface& s)
 REGISTER_OBJECT_WRAPPER(osgWater_WaterSurface, new osgWater::WaterSurface, osgWater::WaterSurface,
                         "osg::Object osg::Node osgWater::WaterSurface") // not osg::Geode: the grid is rebuilt, never stored
 {
+    ADD_BINARY_LAYOUT_SERIALIZER("osgWater::WaterSurface");
     ADD_PRECISE_DOUBLE_SERIALIZER(Level, 0.0);
     ADD_PRECISE_FLOAT_SERIALIZER(Size, 100.0f);
     ADD_PRECISE_VEC2F_SERIALIZER(Center, osg::Vec2f(0.0f, 0.0f));
