@@ -7,7 +7,9 @@
 #include "WarnCapture.h"
 #include <gtest/gtest.h>
 #include <cmath>
+#include <algorithm>
 #include <fstream>
+#include <functional>
 #include <random>
 #include <tuple>
 #include <sstream>
@@ -349,22 +351,6 @@ TEST(Serialization, QualityPresetsRoundTrip)
     EXPECT_EQ(speedSettings(*back->getSettings()), speedSettings(*w->getSettings()));
 }
 
-TEST(Serialization, AnUnknownQualityIsSaidAndIgnored)
-{
-    const std::string file = tmp("badquality.osgt");
-    {
-        std::ofstream out(file);
-        out << "#Ascii Scene\n#Version 161\n#Generator OpenSceneGraph 3.6.5\n\nosgWater::WaterNode {\n  UniqueID 1\n"
-               "  Settings TRUE {\n    osgWater::WaterSettings {\n      UniqueID 2\n      Quality superb\n"
-               "      SearchSteps 5\n    }\n  }\n}\n";
-    }
-    ScopedWarnCapture capture;
-    osg::ref_ptr<WaterNode> w = readWater(file);
-    ASSERT_TRUE(w.valid());
-    EXPECT_NE(capture.str().find("unknown Quality"), std::string::npos);
-    EXPECT_EQ(w->getSettings()->getSearchSteps(), 5) << "the fields after it still read";
-}
-
 TEST(Serialization, TheBinarySeedsReadAsTheirTextTwins)
 {
     // .osgb is positional: a field added in the middle of a wrapper makes every older binary file
@@ -460,4 +446,99 @@ TEST(Serialization, AnAbsurdWindIsClampedWithAWarning)
     EXPECT_EQ(wind.seed, 3u);
     EXPECT_NE(capture.str().find("wind speed"), std::string::npos);
     EXPECT_TRUE(std::isfinite(w->getSurfaceHeightAt(1.0, 2.0, 3.0)));
+}
+
+namespace {
+
+// one file of the bad-file corpus: what it must say, and the node it must read as
+struct BadFile {
+    const char* name;
+    std::vector<std::string> says;             // each a whole warning line: line, class, field, why
+    std::function<void(WaterNode&)> faultKept; // pond() with the faulty fields as a new node has them
+};
+
+std::string osgtOf(const WaterNode& node, const std::string& name)
+{
+    EXPECT_TRUE(osgDB::writeNodeFile(node, tmp(name)));
+    return slurp(tmp(name));
+}
+
+size_t countLines(const std::string& text) { return size_t(std::count(text.begin(), text.end(), '\n')); }
+
+}
+
+// tests/data/bad_osgt holds tests/data/waternode_expected.osgt written by hand with faults: unknown
+// fields (one line, a block, another class's), fields in another order, values that are not of
+// their field's type, out of range, negative counts, unknown names, wrong wave counts and a wind
+// block with all three. Each fault is said once, on its line, and every other field reads intact.
+TEST(Serialization, EachFaultOfTheBadFileCorpusIsSaidOnItsLineAndEveryOtherFieldIsRead)
+{
+    const std::string S = "osgWater::WaterSettings ", F = "osgWater::WaterSurface ";
+    const std::vector<BadFile> corpus = {
+        { "unknown_field", { "osgWater: line 14: " + S + "Foam: is not a field of this class; skipped to its end, the fields after it are read" },
+          [](WaterNode&) {} },
+        { "unknown_block_field", { "osgWater: line 15: " + S + "Foam: is not a field of this class; skipped to its end, the fields after it are read" },
+          [](WaterNode&) {} },
+        { "field_of_another_class", { "osgWater: line 36: " + S + "Resolution: is not a field of this class; skipped to its end, the fields after it are read" },
+          [](WaterNode& w) { w.getSurface()->setResolution(49); } },
+        { "fields_in_another_order", {}, [](WaterNode&) {} },
+        { "not_a_number", { "osgWater: line 13: " + S + "Attenuation: \"x\" is not a number; keeping 0.5" },
+          [](WaterNode& w) { w.getSettings()->setAttenuation(0.5f); } },
+        { "inf_and_nan",
+          { "osgWater: line 12: " + S + "WaterColor: \"nan\" is not a finite number; keeping 0 0.2 0.1",
+            "osgWater: line 13: " + S + "Attenuation: \"inf\" is not a finite number; keeping 0.5" },
+          [](WaterNode& w) {
+              w.getSettings()->setWaterColor(osg::Vec3(0.0f, 0.2f, 0.1f));
+              w.getSettings()->setAttenuation(0.5f);
+          } },
+        { "out_of_range",
+          { "osgWater: line 23: " + S + "PhotonGridSize: \"99999999999\" is out of range; keeping 512",
+            "osgWater: line 34: " + S + "GlowRadius: \"1e999\" is out of range; keeping 3" },
+          [](WaterNode& w) {
+              w.getSettings()->setPhotonGridSize(512);
+              w.getSettings()->setGlowRadius(3.0f);
+          } },
+        { "negative_count", { "osgWater: line 43: " + F + "Resolution: \"-5\" is negative; keeping 49" },
+          [](WaterNode& w) { w.getSurface()->setResolution(49); } },
+        { "exponent_in_integer", { "osgWater: line 17: " + S + "SearchSteps: \"1e9\" is not a whole number; keeping 3" },
+          [](WaterNode& w) { w.getSettings()->setSearchSteps(3); } },
+        { "unknown_enum_name",
+          { "osgWater: line 16: " + S + "RefractionLookup: \"FOO\" is not one of "
+                                        "ONE_STEP|ITERATIVE|PLANE_OFFSET|BRACKETED|VIRTUAL_VERTICES; keeping ITERATIVE" },
+          [](WaterNode& w) { w.getSettings()->setRefractionLookup(WaterSettings::ITERATIVE); } },
+        { "not_a_switch", { "osgWater: line 22: " + S + "ReflectionEnabled: \"maybe\" is not TRUE or FALSE; keeping TRUE" },
+          [](WaterNode& w) { w.getSettings()->setReflectionEnabled(true); } },
+        { "unknown_quality",
+          { "osgWater: line 11: " + S + "Quality: \"superb\" is not one of fast|balanced|exact; keeping the settings as they are" },
+          [](WaterNode&) {} },
+        { "size_zero", { "osgWater::WaterSurface: size 0 out of (0.01, 1e7], keeping 100" },
+          [](WaterNode& w) { w.getSurface()->setSize(100.0f); } },
+        { "wave_count_not_a_number", { "osgWater: line 44: " + F + "Waves: count \"x\" is not a number; keeping the 4 waves" },
+          [](WaterNode& w) { w.getSurface()->setWaves(defaultWaves()); } },
+        { "wave_count_wrong",
+          { "osgWater: line 45: " + F + "Waves: 2 waves are five numbers each, 10, and the block holds 5; keeping the 4 waves" },
+          [](WaterNode& w) { w.getSurface()->setWaves(defaultWaves()); } },
+        { "wind_with_bad_fields",
+          { "osgWater: line 48: " + F + "Wind Gusts: is not a field of the wind; skipped to its end",
+            "osgWater: line 51: " + F + "Wind Fetch: \"fast\" is not a number; keeping its default",
+            "osgWater: line 52: " + F + "Wind Seed: \"-1\" is negative; keeping its default" },
+          [](WaterNode& w) {
+              WindWaves wind;
+              wind.speed = 12.0f;
+              wind.swell = 0.5f;
+              w.getSurface()->setWind(wind);
+              w.getSurface()->setWaveModel(WaterSurface::WAVES_WIND);
+          } },
+    };
+    for (const BadFile& c : corpus) {
+        ScopedWarnCapture capture;
+        osg::ref_ptr<WaterNode> read = readWater(std::string(OSGWATER_TEST_DATA) + "/bad_osgt/" + c.name + ".osgt");
+        ASSERT_TRUE(read.valid()) << c.name;
+        const std::string said = capture.str();
+        for (const std::string& line : c.says) EXPECT_NE(said.find(line + "\n"), std::string::npos) << c.name << " said:\n" << said;
+        EXPECT_EQ(countLines(said), c.says.size()) << c.name << " said:\n" << said;
+        osg::ref_ptr<WaterNode> expected = pond();
+        c.faultKept(*expected);
+        EXPECT_EQ(osgtOf(*read, "bad_read.osgt"), osgtOf(*expected, "bad_expected.osgt")) << c.name;
+    }
 }

@@ -1,7 +1,8 @@
 // osgDB wrapper of FloatingTransform (see WaterSettingsSerializer.cpp for how osgDB finds it).
 #include <osgWater/FloatingTransform>
-#include "serialize/PreciseSerializer.h"
+#include "serialize/FieldSerializers.h"
 #include "serialize/LayoutVersion.h"
+#include "serialize/OtherFields.h"
 #include <osgDB/ObjectWrapper>
 #include <osgDB/InputStream>
 #include <osgDB/OutputStream>
@@ -13,10 +14,11 @@ REGISTER_OBJECT_WRAPPER(osgWater_FloatingTransform, new osgWater::FloatingTransf
                         "osg::Object osg::Node osg::Group osg::Transform osg::MatrixTransform osgWater::FloatingTransform")
 {
     ADD_BINARY_LAYOUT_SERIALIZER("osgWater::FloatingTransform");
-    ADD_PRECISE_DOUBLE_SERIALIZER(PositionX, 0.0);
-    ADD_PRECISE_DOUBLE_SERIALIZER(PositionY, 0.0);
-    ADD_PRECISE_DOUBLE_SERIALIZER(Heading, 0.0);
-    ADD_PRECISE_DOUBLE_SERIALIZER(Draft, 0.0);
-    ADD_PRECISE_DOUBLE_SERIALIZER(Damping, 0.0);
-    ADD_BOOL_SERIALIZER(Tilt, true);
+    ADD_DOUBLE_FIELD(PositionX, 0.0);
+    ADD_DOUBLE_FIELD(PositionY, 0.0);
+    ADD_DOUBLE_FIELD(Heading, 0.0);
+    ADD_DOUBLE_FIELD(Draft, 0.0);
+    ADD_DOUBLE_FIELD(Damping, 0.0);
+    ADD_BOOL_FIELD(Tilt, true);
+    ADD_OTHER_FIELDS_SERIALIZER("osgWater::FloatingTransform");
 }

@@ -1,7 +1,8 @@
 // osgDB wrapper of WaterSurface (see WaterSettingsSerializer.cpp for how osgDB finds it).
 #include <osgWater/WaterSurface>
-#include "serialize/PreciseSerializer.h"
+#include "serialize/FieldSerializers.h"
 #include "serialize/LayoutVersion.h"
+#include "serialize/OtherFields.h"
 #include <osgDB/ObjectWrapper>
 #include <osgDB/InputStream>
 #include <osgDB/OutputStream>
@@ -13,18 +14,56 @@ namespace {
 
 bool checkWaves(const WaterSurface& s) { return !(s.getWaves() == defaultWaves()); }
 
+// Binary: a count and the numbers. Text: a count and a block of lines of five numbers, read whole
+// before any is used, so a wrong count or a bad number is reported and the waves kept as they were.
 bool readWaves(osgDB::InputStream& is, WaterSurface& s)
 {
-    const unsigned int n = is.readSize();
-    if (n > 1024) { // a garbage count would make us read forever
-        is.throwException("osgWater::WaterSurface: absurd wave count");
-        return false;
+    const unsigned int most = 1024; // a garbage count would make us read forever
+    if (is.isBinary()) {
+        const unsigned int n = is.readSize();
+        if (n > most) {
+            is.throwException("osgWater::WaterSurface: absurd wave count");
+            return false;
+        }
+        std::vector<Wave> waves(n);
+        is >> is.BEGIN_BRACKET;
+        for (Wave& w : waves) is >> w.direction >> w.wavelength >> w.amplitude >> w.phase;
+        is >> is.END_BRACKET;
+        s.setWaves(waves);
+        return true;
     }
-    std::vector<Wave> waves(n);
-    is >> is.BEGIN_BRACKET;
-    for (Wave& w : waves) is >> w.direction >> w.wavelength >> w.amplitude >> w.phase;
-    is >> is.END_BRACKET;
-    s.setWaves(waves);
+    std::string count, why;
+    unsigned int n = 0;
+    is >> count;
+    const detail::TextCursor text(is);
+    const std::streamoff at = text.valid() ? text.offset() : -1; // the field's line, for messages
+    const bool counted = detail::parseToken(count, n, why);
+    if (!counted) why = "count \"" + count + "\" " + why;
+    std::string token;
+    is >> token;
+    if (token != "{") { // no block: what the line holds is left to be read as fields (OtherFields.h)
+        detail::reportField(is, s, "Waves", "expects a count and a block; keeping the " + std::to_string(s.getWaves().size()) + " waves", at);
+        return true;
+    }
+    std::vector<std::string> numbers;
+    for (is >> token; token != "}" && !token.empty() && !is.getException(); is >> token)
+        if (numbers.size() <= 5 * most) numbers.push_back(token);
+    if (is.getException()) return false;
+    std::vector<Wave> waves(counted ? std::min(n, most) : 0);
+    if (counted && n > most) why = "count " + count + " is more than " + std::to_string(most);
+    else if (counted && numbers.size() != 5 * size_t(n))
+        why = count + " waves are five numbers each, " + std::to_string(5 * size_t(n)) + ", and the block holds " +
+              std::to_string(numbers.size());
+    for (size_t i = 0; why.empty() && i < numbers.size(); ++i) {
+        Wave& w = waves[i / 5];
+        float* const fields[] = { &w.direction.x(), &w.direction.y(), &w.wavelength, &w.amplitude, &w.phase };
+        if (!detail::parseToken(numbers[i], *fields[i % 5], why))
+            why = "wave " + std::to_string(i / 5 + 1) + ": \"" + numbers[i] + "\" " + why;
+    }
+    if (why.empty())
+        s.setWaves(waves);
+    else
+        detail::reportField(is, s, "Waves", why + "; keeping the " + std::to_string(s.getWaves().size()) + " waves", at);
     return true;
 }
 
@@ -45,19 +84,59 @@ bool writeWaves(osgDB::OutputStream& os, const WaterSurface& s)
 
 bool checkWind(const WaterSurface& s) { return s.getWind() != WindWaves(); }
 
-// the wind as named fields in a block, each read into a default wind (setWind clamps)
+// the wind's fields, by name in a block, in the order written
+struct WindField {
+    const char* name;
+    float WindWaves::*number;
+    osg::Vec2 WindWaves::*vector;
+    unsigned int WindWaves::*whole;
+};
+const WindField kWindFields[] = {
+    { "Speed", &WindWaves::speed, nullptr, nullptr },   { "Direction", nullptr, &WindWaves::direction, nullptr },
+    { "Fetch", &WindWaves::fetch, nullptr, nullptr },   { "Depth", &WindWaves::depth, nullptr, nullptr },
+    { "Spread", &WindWaves::spread, nullptr, nullptr }, { "Swell", &WindWaves::swell, nullptr, nullptr },
+    { "Seed", nullptr, nullptr, &WindWaves::seed },
+};
+
+template <typename T> bool readInto(osgDB::InputStream& is, T& field, std::string& why)
+{
+    T value = field;
+    if (!detail::readValue(is, value, why)) return false;
+    field = value;
+    return true;
+}
+
+// the wind as named fields in a block, in any order, each read into a default wind (setWind clamps);
+// a field that does not parse, or that the wind lacks, is reported and the rest still read
 bool readWind(osgDB::InputStream& is, WaterSurface& s)
 {
     WindWaves w;
-    is >> is.BEGIN_BRACKET;
-    is >> is.PROPERTY("Speed") >> w.speed;
-    is >> is.PROPERTY("Direction") >> w.direction;
-    is >> is.PROPERTY("Fetch") >> w.fetch;
-    is >> is.PROPERTY("Depth") >> w.depth;
-    is >> is.PROPERTY("Spread") >> w.spread;
-    is >> is.PROPERTY("Swell") >> w.swell;
-    is >> is.PROPERTY("Seed") >> w.seed;
-    is >> is.END_BRACKET;
+    if (is.isBinary()) {
+        is >> is.BEGIN_BRACKET;
+        for (const WindField& f : kWindFields) {
+            if (f.number) is >> w.*f.number;
+            if (f.vector) is >> w.*f.vector;
+            if (f.whole) is >> w.*f.whole;
+        }
+        is >> is.END_BRACKET;
+        s.setWind(w);
+        return true;
+    }
+    detail::TextCursor text(is);
+    std::string name;
+    is >> name; // the block's "{"
+    for (is >> name; name != "}" && !name.empty() && !is.getException(); is >> name) {
+        const WindField* field = nullptr;
+        for (const WindField& f : kWindFields) field = name == f.name ? &f : field;
+        std::string why;
+        if (!field) {
+            detail::reportField(is, s, "Wind " + name, "is not a field of the wind; skipped to its end");
+            if (text.valid()) text.skipField();
+        } else if (!(field->number ? readInto(is, w.*field->number, why)
+                                   : field->vector ? readInto(is, w.*field->vector, why) : readInto(is, w.*field->whole, why)))
+            detail::reportField(is, s, std::string("Wind ") + field->name, why + "; keeping its default");
+    }
+    if (is.getException()) return false;
     s.setWind(w);
     return true;
 }
@@ -65,17 +144,17 @@ bool readWind(osgDB::InputStream& is, WaterSurface& s)
 bool writeWind(osgDB::OutputStream& os, const WaterSurface& s)
 {
     const WindWaves& w = s.getWind();
-    int digits = 6;
-    for (float f : { w.speed, w.fetch, w.depth, w.spread, w.swell }) digits = std::max(digits, detail::digitsFor(f));
-    digits = std::max(digits, detail::digitsFor(w.direction));
+    int digits = detail::digitsFor(w.direction);
+    for (const WindField& f : kWindFields)
+        if (f.number) digits = std::max(digits, detail::digitsFor(w.*f.number));
     os << detail::setPrecision(digits) << os.BEGIN_BRACKET << std::endl;
-    os << os.PROPERTY("Speed") << w.speed << std::endl;
-    os << os.PROPERTY("Direction") << w.direction << std::endl;
-    os << os.PROPERTY("Fetch") << w.fetch << std::endl;
-    os << os.PROPERTY("Depth") << w.depth << std::endl;
-    os << os.PROPERTY("Spread") << w.spread << std::endl;
-    os << os.PROPERTY("Swell") << w.swell << std::endl;
-    os << os.PROPERTY("Seed") << w.seed << std::endl;
+    for (const WindField& f : kWindFields) {
+        os << os.PROPERTY(f.name);
+        if (f.number) os << w.*f.number;
+        if (f.vector) os << w.*f.vector;
+        if (f.whole) os << w.*f.whole;
+        os << std::endl;
+    }
     os << os.END_BRACKET << detail::restorePrecision << std::endl;
     return true;
 }
@@ -86,20 +165,21 @@ REGISTER_OBJECT_WRAPPER(osgWater_WaterSurface, new osgWater::WaterSurface, osgWa
                         "osg::Object osg::Node osgWater::WaterSurface") // not osg::Geode: the grid is rebuilt, never stored
 {
     ADD_BINARY_LAYOUT_SERIALIZER("osgWater::WaterSurface");
-    ADD_PRECISE_DOUBLE_SERIALIZER(Level, 0.0);
-    ADD_PRECISE_FLOAT_SERIALIZER(Size, 100.0f);
-    ADD_PRECISE_VEC2F_SERIALIZER(Center, osg::Vec2f(0.0f, 0.0f));
-    ADD_UINT_SERIALIZER(Resolution, 49u);
-    BEGIN_ENUM_SERIALIZER(MeshLayout, MESH_EYE_RINGS);
+    ADD_DOUBLE_FIELD(Level, 0.0);
+    ADD_FLOAT_FIELD(Size, 100.0f);
+    ADD_VEC2F_FIELD(Center, osg::Vec2f(0.0f, 0.0f));
+    ADD_UINT_FIELD(Resolution, 49u);
+    BEGIN_ENUM_FIELD(MeshLayout, MESH_EYE_RINGS);
         ADD_ENUM_VALUE(MESH_GRID);
         ADD_ENUM_VALUE(MESH_EYE_RINGS);
-    END_ENUM_SERIALIZER();
+    END_ENUM_FIELD();
     ADD_USER_SERIALIZER(Waves);
     ADD_OBJECT_SERIALIZER(Mesh, osg::Geometry, NULL);
-    BEGIN_ENUM_SERIALIZER(WaveModel, WAVES_SUM);
+    BEGIN_ENUM_FIELD(WaveModel, WAVES_SUM);
         ADD_ENUM_VALUE(WAVES_SUM);
         ADD_ENUM_VALUE(WAVES_WIND);
-    END_ENUM_SERIALIZER();
+    END_ENUM_FIELD();
     ADD_USER_SERIALIZER(Wind);
+    ADD_OTHER_FIELDS_SERIALIZER("osgWater::WaterSurface");
 }
 

@@ -119,9 +119,11 @@ void WaterSurface::setLevel(double z)
 
 void WaterSurface::setSize(float size)
 {
-    const float used = !(size > 0.01f) ? 100.0f : std::min(size, 1.0e7f); // NaN and <= 0: the default
+    // NaN and <= 0 name no size: the water keeps its own (a file's "Size 0" leaves the lake as it was)
+    const float used = !(size > 0.01f) ? _size : std::min(size, 1.0e7f);
     if (used != size)
-        OSG_WARN << "osgWater::WaterSurface: size " << size << " out of (0.01, 1e7], using " << used << std::endl;
+        OSG_WARN << "osgWater::WaterSurface: size " << size << " out of (0.01, 1e7], "
+                 << (size > 0.01f ? "using " : "keeping ") << used << std::endl;
     _size = used;
     respectrum(); // the wind's cascades are chosen for the water's size (and its fetch by default)
     rebuild();

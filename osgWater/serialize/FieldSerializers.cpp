@@ -1,6 +1,5 @@
-#include "serialize/PreciseSerializer.h"
+#include "serialize/FieldSerializers.h"
 #include <osg/Math>
-#include <charconv>
 #include <cstdio>
 
 namespace osgWater {
@@ -8,8 +7,15 @@ namespace detail {
 
 namespace {
 
-double readBack(const char* text, float) { return osg::asciiToDouble(text); } // what OSG reads floats with
-double readBack(const char* text, double) { return parseDouble(text); }
+// what the reader parses with: floats as osgDB does, doubles exactly
+double readBack(const char* text, float) { return osg::asciiToDouble(text); }
+double readBack(const char* text, double)
+{
+    double v = 0.0;
+    std::string why;
+    parseToken(text, v, why);
+    return v;
+}
 
 template <typename T> int shortest(T v, int most)
 {
@@ -33,15 +39,6 @@ template <int D> std::ostream& setDigits(std::ostream& s)
     return s;
 }
 
-}
-
-double parseDouble(const std::string& text)
-{
-    double v = 0.0;
-    const char* end = text.data() + text.size();
-    const std::from_chars_result r = std::from_chars(text.data(), end, v);
-    if (r.ec == std::errc() && r.ptr == end) return v;
-    return osg::asciiToDouble(text.c_str()); // "1e999", hex and the like: OSG's reading, as before
 }
 
 int digitsFor(float v) { return shortest(v, 9); }
