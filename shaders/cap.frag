@@ -47,11 +47,14 @@ void main()
     vec3 S = 0.5 * (a + b);
     vec3 D = owSafeNormalize(P - C, owSafeNormalize(vFar.xyz / vFar.w - P, vec3(0.0, 0.0, -1.0)));
 #ifdef OSGWATER_GRID
-    vec3 N = waterNormal(S.xy);
+    vec4 hsr = waterSlopesAndRoughness(S.xy);
+    vec3 N = normalize(vec3(-hsr.yz, 1.0));
+    float roughness = hsr.w;
 #else
     vec3 N = vec3(0.0, 0.0, 1.0);
+    const float roughness = 0.0;
 #endif
     vec4 debugHit;
-    vec3 color = owShadeWater(S, N, -D, debugHit);
+    vec3 color = owShadeWater(S, N, -D, roughness, debugHit);
     gl_FragColor = owWaterFragment(S, S, color, debugHit);
 }

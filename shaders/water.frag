@@ -23,12 +23,14 @@ void main()
     waterFootprint = max(length(dFdx(vLocal.xy)), length(dFdy(vLocal.xy)));
 #endif
     vec3 U = waterOnSightRay(osgWater_EyeLocal, vLocal, vDrawnError, eyeSide, N);
+    float roughness = waterShownRoughness;
 #else
+    const float roughness = 0.0; // a user's mesh: its normals are what there is
     vec3 U = vLocal;
     vec3 N = owSafeNormalize(vMeshNormal, vec3(0.0, 0.0, 1.0));
 #endif
     vec3 E = owSafeNormalize(osgWater_EyeLocal - U, vec3(0.0, 0.0, 1.0));
     vec4 debugHit;
-    vec3 color = owShadeWater(U, N, E, debugHit);
+    vec3 color = owShadeWater(U, N, E, roughness, debugHit);
     gl_FragColor = owWaterFragment(U, vLocal, color, debugHit);
 }

@@ -40,6 +40,7 @@ uniform vec2 osgWater_LookupPlanes;         // plane-offset lookups: (height abo
 uniform samplerCube osgWater_EnvironmentTex;
 #endif
 
+// The texture's texels where the point P (w = 0: a direction) projects through `mvp`
 vec3 owSampleProjected(sampler2D tex, mat4 mvp, vec4 P, vec3 fallback)
 {
     vec4 c = mvp * P;
@@ -47,9 +48,50 @@ vec3 owSampleProjected(sampler2D tex, mat4 mvp, vec4 P, vec3 fallback)
     return texture(tex, c.xy / c.w * 0.5 + 0.5).rgb;
 }
 
+// The same blurred over `spread`, the blur's (width, height) in texels (zero: level 0).
+// Taller than wide: kSpreadTaps reads stacked up the texture, each at the level whose texels are
+// as wide as the blur and as tall as its share of the height (filtering hardware would do this
+// anisotropically, but a software rasteriser pays its sixteen reads on every fragment). Only the
+// wind's waves leave slopes below the pixel: the sum's read once, at level 0.
+#ifdef OSGWATER_WIND
+const int kSpreadTaps = 4;
+#else
+const int kSpreadTaps = 1;
+#endif
+vec3 owSampleProjectedSpread(sampler2D tex, mat4 mvp, vec4 P, vec3 fallback, vec2 spread)
+{
+    vec4 c = mvp * P;
+    if (!(c.w > 1e-6)) return fallback;
+    vec2 uv = c.xy / c.w * 0.5 + 0.5;
+    float tapHeight = spread.y / float(kSpreadTaps);
+    float lod = log2(max(max(spread.x, tapHeight), 1.0));
+    float step = tapHeight / float(textureSize(tex, 0).y);
+    vec3 sum = vec3(0.0);
+    for (int k = 0; k < kSpreadTaps; ++k)
+        sum += textureLod(tex, uv + vec2(0.0, (float(k) + 0.5 - 0.5 * float(kSpreadTaps)) * step), lod).rgb;
+    return sum / float(kSpreadTaps);
+}
+
+// The reflection blurred by the slopes the shaded normal does not show (their variance
+// `roughness`, both axes together; 0 but under the wind): the blur's (width, height) in texels of
+// the reflection pass's texture. A slope of deviation sigma = sqrt(roughness / 2) along the plane
+// of incidence turns the mirrored ray up or down by 2 sigma; one across it turns the ray sideways
+// by only 2 sigma sin(e), e the ray's elevation: at grazing angles reflections smear into
+// vertical streaks, not round blurs (the mirrored camera keeps the texture's vertical upright).
+// The pass sees a turn from its (mirrored) eye, L metres from U, at the lookup point P D metres
+// on, as the angle turn D / (L + D) (at infinity: the turn itself); the blur spans it either way.
+vec2 owReflectionSpread(vec3 U, vec4 P, vec3 Rr, float roughness)
+{
+    float turn = 2.0 * sqrt(0.5 * max(roughness, 0.0));
+    float seen = P.w > 0.5 ? turn * length(P.xyz - U) / (length(osgWater_EyeLocal - U) + length(P.xyz - U)) : turn;
+    float texelsPerRadian = 0.5 * float(textureSize(osgWater_ReflectionTex, 0).y) * osgWater_ReflectionProj[1][1];
+    float tall = 2.0 * seen * texelsPerRadian;
+    return vec2(tall * abs(Rr.z), tall);
+}
+
 // The same for a ray along `dir` whose lookup point is P: where P falls outside the texture (or
 // behind its camera), the environment along dir, when there is one (`fromEnvironment` says so).
-vec3 owSampleOrEnvironment(sampler2D tex, mat4 mvp, vec4 P, vec3 dir, vec3 fallback, out bool fromEnvironment)
+vec3 owSampleOrEnvironment(sampler2D tex, mat4 mvp, vec4 P, vec3 dir, vec3 fallback, vec2 spread, out bool fromEnvironment)
 {
     fromEnvironment = false;
 #ifdef OSGWATER_ENVIRONMENT
@@ -61,7 +103,7 @@ vec3 owSampleOrEnvironment(sampler2D tex, mat4 mvp, vec4 P, vec3 dir, vec3 fallb
         return texture(osgWater_EnvironmentTex, dir).rgb;
     }
 #endif
-    return owSampleProjected(tex, mvp, P, fallback);
+    return owSampleProjectedSpread(tex, mvp, P, fallback, spread);
 }
 
 // DeepWater's plane-offset lookups: the scene taken as the plane z = planeZ; the ray from U along D
@@ -158,7 +200,7 @@ vec3 owRefractedFromBelow(vec3 U, vec3 R, out vec4 debugHit)
         debugHit = vec4((osgWater_RefractionViewInverse * vec4(hit.W, 1.0)).xyz, 2.0);
     } else {
         bool fromEnvironment;
-        col = owSampleOrEnvironment(osgWater_RefractionTex, mvp, vec4(R, 0.0), R, osgWater_WaterColor, fromEnvironment);
+        col = owSampleOrEnvironment(osgWater_RefractionTex, mvp, vec4(R, 0.0), R, osgWater_WaterColor, vec2(0.0), fromEnvironment);
         debugHit = vec4(R, 3.0);
     }
 #endif
@@ -192,8 +234,9 @@ vec4 owReflectionLookupPoint(vec3 U, vec3 Rr, bool below)
 #endif
 }
 
-// U: the surface point, Nup: its unit normal (up, into the air), E: unit vector towards the eye.
-vec3 owShadeWater(vec3 U, vec3 Nup, vec3 E, out vec4 debugOut)
+// U: the surface point, Nup: its unit normal (up, into the air), E: unit vector towards the eye,
+// roughness: the variance of the slopes below the pixel that Nup does not show (waves.glsl).
+vec3 owShadeWater(vec3 U, vec3 Nup, vec3 E, float roughness, out vec4 debugOut)
 {
     vec4 debugHit = vec4(0.0, 0.0, 0.0, -1.0);
 #ifdef OSGWATER_EYE_BELOW
@@ -249,9 +292,10 @@ vec3 owShadeWater(vec3 U, vec3 Nup, vec3 E, out vec4 debugOut)
     F = tir ? 1.0 : 0.0;
 #else
     bool fromEnvironment = false;
+    vec2 spread = owReflectionSpread(U, reflP, Rr, roughness);
     vec3 reflCol = environment
-        ? owSampleOrEnvironment(osgWater_ReflectionTex, osgWater_ReflectionMVP, reflP, Rr, osgWater_WaterColor, fromEnvironment)
-        : owSampleProjected(osgWater_ReflectionTex, osgWater_ReflectionMVP, reflP, osgWater_WaterColor);
+        ? owSampleOrEnvironment(osgWater_ReflectionTex, osgWater_ReflectionMVP, reflP, Rr, osgWater_WaterColor, spread, fromEnvironment)
+        : owSampleProjectedSpread(osgWater_ReflectionTex, osgWater_ReflectionMVP, reflP, osgWater_WaterColor, spread);
     if (fromEnvironment) debugRefl = vec4(Rr, 3.0); // the lookup became the ray's direction
 #endif
 

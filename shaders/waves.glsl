@@ -187,6 +187,10 @@ float waterNewtonStep(vec3 P, vec3 D, vec3 hs)
     return -(P.z - hs.x) / (abs(df) > 1e-6 ? df : 1e30);
 }
 
+// The slopes' variance below the pixel at the point waterOnSightRay found (its roughness; 0 for the
+// sum's waves, all drawn)
+float waterShownRoughness = 0.0;
+
 // Where the line of sight from C through V first meets the analytic surface, and the unit normal
 // there. V: a point of a drawn mesh within `bound` metres of the surface, up or down; eyeSide: 1
 // for an eye above the surface, -1 below. The surface can only cross the ray where the ray lies
@@ -237,7 +241,9 @@ vec3 waterOnSightRay(vec3 C, vec3 V, float bound, float eyeSide, out vec3 N)
         else { tHi = t; fHi = f; if (side > 0) fLo *= 0.5; side = 1; }
     }
     vec3 P = tHi < 0.0 ? V : C + (tLo + (tHi - tLo) * fLo / (fLo - fHi)) * D;
-    vec3 hs = waterHeightAndSlope(P.xy);
+    vec4 hsr = waterSlopesAndRoughness(P.xy); // the same reads as the slopes alone
+    vec3 hs = hsr.xyz;
+    waterShownRoughness = hsr.w;
     N = normalize(vec3(-hs.yz, 1.0));
     // the slope the normal needs gives a last Newton step for free, kept inside the bracket
     float t = dot(P - C, D) + waterNewtonStep(P, D, hs);

@@ -339,3 +339,79 @@ INSTANTIATE_TEST_SUITE_P(Fresnel, RenderFresnelModel,
                          [](const ::testing::TestParamInfo<WaterSettings::FresnelModel>& info) {
                              return std::string(WaterSettings::fresnelModelName(info.param));
                          });
+
+namespace {
+
+// The far water's reflection of white stripes on a black sky, seen from 30 m over water 3 km
+// wide: for each image row of water between 250 m and 1 km out, how much the stripes still show
+// (the standard deviation of the row's luminance over its mean), median over the rows.
+double farStripesContrast(bool wind)
+{
+    Harness h(240, 180);
+    if (!h.ok()) return -1.0;
+    osg::ref_ptr<WaterNode> water = new WaterNode;
+    WaterSurface* surface = water->getSurface();
+    surface->setSize(3000.0f);
+    if (wind) {
+        WindWaves fresh; // 8 m/s over the water's 3 km
+        fresh.speed = 8.0f;
+        fresh.direction.set(0.0f, 1.0f);
+        surface->setWind(fresh);
+        surface->setWaveModel(WaterSurface::WAVES_WIND);
+    } else {
+        surface->setWaves({}); // a mirror: every slope drawn (none), no roughness
+    }
+    water->getSettings()->setRefractionEnabled(false); // F alone weighs the reflection
+    water->getSettings()->setCausticsEnabled(false);
+    water->getSettings()->setGlowEnabled(false);
+    // stripes 30 m wide every 60 m, 1.4 km beyond the water's far edge: 0.013 rad apart seen from
+    // the eye; the reflection pass holds about 600 texels a radian, so 8 texels a stripe
+    const float y = 3000.0f;
+    for (float x = -4000.0f; x < 4000.0f; x += 60.0f)
+        water->addChild(emissiveQuad(osg::Vec3(x, y, -50), osg::Vec3(x + 30, y, -50), osg::Vec3(x + 30, y, 2000),
+                                     osg::Vec3(x, y, 2000), osg::Vec4(1, 1, 1, 1)));
+    h.camera()->setClearColor(osg::Vec4(0, 0, 0, 1));
+    h.setScene(water.get());
+    const osg::Vec3d eye(0, 0, 30);
+    h.lookAt(eye, osg::Vec3d(0, 1000, 10));
+    h.frame(0.0);
+    osg::ref_ptr<osg::Image> img = h.readColor();
+    std::vector<double> contrast;
+    for (int row = 0; row < h.height(); ++row) {
+        // the row's distance on flat water, from where the points 250 m and 1 km out land
+        const double near = h.pixelOf(osg::Vec3d(0, 250, 0)).y(), far = h.pixelOf(osg::Vec3d(0, 1000, 0)).y();
+        if (row < near || row > far) continue;
+        double sum = 0.0, sum2 = 0.0;
+        int n = 0;
+        for (int x = 20; x < h.width() - 20; ++x) {
+            const float* c = pixel(img.get(), x, row);
+            const double l = 0.2126 * c[0] + 0.7152 * c[1] + 0.0722 * c[2];
+            sum += l;
+            sum2 += l * l;
+            ++n;
+        }
+        const double mean = sum / n;
+        if (mean > 1e-4) contrast.push_back(std::sqrt(std::max(sum2 / n - mean * mean, 0.0)) / mean);
+    }
+    if (contrast.size() < 10) return -2.0;
+    std::sort(contrast.begin(), contrast.end());
+    return contrast[contrast.size() / 2];
+}
+
+}
+
+// Slopes too fine for the pixel turn the mirrored ray each its own way: the reflection there is the
+// scene blurred over the cone they spread (twice their deviation, about 0.3 rad at 8 m/s by Cox
+// and Munk), not one sharp point of it, so stripes 0.013 rad apart must merge to their mean.
+// Calm water (no slope below any pixel) keeps them sharp. Read at the texture's level 0 the far
+// water showed every stripe, scattered by the waves (contrast about 1).
+TEST(RenderReflection, UnderTheWindFarWaterReflectsThroughTheSlopesBelowItsPixelsBlurred)
+{
+    Harness probe(8, 8);
+    REQUIRE_GL(probe);
+    const double calm = farStripesContrast(false), windy = farStripesContrast(true);
+    ASSERT_GE(calm, 0.0);
+    ASSERT_GE(windy, 0.0);
+    EXPECT_GT(calm, 0.5) << "the calm reflection shows the stripes";
+    EXPECT_LT(windy, 0.1) << "the stripes merged (calm: " << calm << ")";
+}

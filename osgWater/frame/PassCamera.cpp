@@ -1,4 +1,5 @@
 #include "frame/PassCamera.h"
+#include <algorithm>
 #include <osg/ValueObject>
 #include "frame/PassMath.h"
 
@@ -21,13 +22,21 @@ PassCamera::PassCamera(osg::Group* scene, std::initializer_list<osg::StateSet*> 
     getOrCreateStateSet()->setDataVariance(osg::Object::DYNAMIC);
 }
 
-void PassCamera::attachColorTexture()
+void PassCamera::attachColorTexture(bool mipmapped)
 {
     // linear light: 8 bits would band in the darks, where the eye sees the steps (half floats keep
     // every display level of a smooth gradient)
     _color = makeTargetTexture(_width, _height, GL_RGBA16F_ARB, GL_RGBA, GL_FLOAT, true);
     _color->setName("osgWater.passColor");
-    attach(osg::Camera::COLOR_BUFFER, _color.get());
+    if (mipmapped) {
+        // OSG makes an image-less texture's storage with one level unless told how many, and the
+        // attachment's flag fills only the levels there are
+        unsigned int levels = 1;
+        while ((std::max(_width, _height) >> levels) > 0) ++levels;
+        _color->setNumMipmapLevels(levels);
+        _color->setFilter(osg::Texture::MIN_FILTER, osg::Texture::LINEAR_MIPMAP_LINEAR);
+    }
+    attach(osg::Camera::COLOR_BUFFER, _color.get(), 0, 0, mipmapped);
 }
 
 void PassCamera::attachDepthTexture()

@@ -88,7 +88,9 @@ public:
 
 protected:
     virtual ~PassCamera() {}
-    void attachColorTexture();
+    //! The colour target; `mipmapped`: with every mip level, made after each draw (a lookup that
+    //! reads the target blurred).
+    void attachColorTexture(bool mipmapped = false);
     //! A depth texture as the depth target, for a search in this pass's eye space.
     void attachDepthTexture();
 

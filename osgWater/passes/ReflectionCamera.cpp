@@ -9,7 +9,7 @@ ReflectionCamera::ReflectionCamera(osg::Group* scene, osg::StateSet* sceneState,
     : PassCamera(scene, { sceneState }, width, height, PASS_REFLECTION)
 {
     setName("osgWater.ReflectionCamera");
-    attachColorTexture();
+    attachColorTexture(true); // mipmapped: the water reads it blurred by the slopes below its pixels
     attachDepthTexture(); // the mirror search reads it
     // the mirror flips winding: keep front faces front
     getOrCreateStateSet()->setAttribute(new osg::FrontFace(osg::FrontFace::CLOCKWISE));
