@@ -1,4 +1,5 @@
 #include "GLHarness.h"
+#include "offscreen/TextureReadback.h"
 #include <osgWater/Offscreen>
 #include <osgWater/WaterTypes>
 #include "optics/Optics.h"
@@ -76,31 +77,24 @@ osg::ref_ptr<osg::Image> readTexture(osg::GraphicsContext* gc, osg::Texture2D* t
     gc->makeCurrent();
     const GLenum before = glGetError(); // errors the frame left behind are the frame's, not ours
     EXPECT_EQ(before, GLenum(GL_NO_ERROR)) << "GL error left by the frame before reading " << texture->getName();
-    const unsigned int id = gc->getState()->getContextID();
-    osg::Texture::TextureObject* to = texture->getTextureObject(id);
-    osg::ref_ptr<osg::Image> img = new osg::Image;
-    if (to) {
-        const int w = std::max(texture->getTextureWidth() >> level, 1), h = std::max(texture->getTextureHeight() >> level, 1);
-        img->allocateImage(w, h, 1, GL_RGBA, GL_FLOAT);
-        GLint bound = 0; // restored afterwards: osg::State believes it is still bound
-        glGetIntegerv(GL_TEXTURE_BINDING_2D, &bound);
-        glBindTexture(GL_TEXTURE_2D, to->id());
-        const GLint fmt = texture->getInternalFormat();
-        if (fmt == GL_DEPTH_COMPONENT24 || fmt == GL_DEPTH_COMPONENT) {
-            std::vector<float> depth(size_t(w) * h);
-            glGetTexImage(GL_TEXTURE_2D, level, GL_DEPTH_COMPONENT, GL_FLOAT, depth.data());
-            float* p = reinterpret_cast<float*>(img->data());
-            for (size_t i = 0; i < depth.size(); ++i) p[4 * i] = p[4 * i + 1] = p[4 * i + 2] = p[4 * i + 3] = depth[i];
-        } else {
-            glGetTexImage(GL_TEXTURE_2D, level, GL_RGBA, GL_FLOAT, img->data());
-        }
-        glBindTexture(GL_TEXTURE_2D, GLuint(bound));
-        const GLenum err = glGetError();
-        EXPECT_EQ(err, GLenum(GL_NO_ERROR)) << "reading back " << texture->getName();
+    const GLint fmt = texture->getInternalFormat();
+    const bool depth = fmt == GL_DEPTH_COMPONENT24 || fmt == GL_DEPTH_COMPONENT;
+    osg::ref_ptr<osg::Image> img =
+        osgWater::detail::readTexture(gc, texture, depth ? GL_DEPTH_COMPONENT : GL_RGBA, GL_FLOAT, level);
+    if (!img) return nullptr;
+    const GLenum err = glGetError();
+    EXPECT_EQ(err, GLenum(GL_NO_ERROR)) << "reading back " << texture->getName();
+    if (depth) { // every channel the depth, as the tests read colours
+        osg::ref_ptr<osg::Image> rgba = new osg::Image;
+        rgba->allocateImage(img->s(), img->t(), 1, GL_RGBA, GL_FLOAT);
+        const float* d = reinterpret_cast<const float*>(img->data());
+        float* p = reinterpret_cast<float*>(rgba->data());
+        for (size_t i = 0; i < size_t(img->s()) * img->t(); ++i) p[4 * i] = p[4 * i + 1] = p[4 * i + 2] = p[4 * i + 3] = d[i];
+        img = rgba;
     }
-    // leave it current: the viewer (release hint off) does not make it current again
-    if (to && std::getenv("OSGWATER_TEST_DUMP")) dumpImage(img.get(), texture->getName().empty() ? "texture" : texture->getName());
-    return to ? img : nullptr;
+    // left current: the viewer (release hint off) does not make it current again
+    if (std::getenv("OSGWATER_TEST_DUMP")) dumpImage(img.get(), texture->getName().empty() ? "texture" : texture->getName());
+    return img;
 }
 
 void dumpImage(const osg::Image* img, const std::string& name)

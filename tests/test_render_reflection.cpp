@@ -35,6 +35,17 @@ osg::Vec2d texel(const osg::Vec3d& p, const osg::Matrixd& view, const osg::Matri
 
 bool isRed(const float* p) { return p[0] > 0.9f && p[1] < 0.1f && p[2] < 0.1f; }
 
+// the wind's waves on `surface`: `speed` m/s towards `direction` over `fetch` metres (0: the water's size)
+void raiseWind(WaterSurface& surface, float speed, float fetch, const osg::Vec2& direction)
+{
+    WindWaves wind;
+    wind.speed = speed;
+    wind.fetch = fetch;
+    wind.direction = direction;
+    surface.setWind(wind);
+    surface.setWaveModel(WaterSurface::WAVES_WIND);
+}
+
 }
 
 TEST(RenderReflection, RedQuadAppearsMirroredWhereGeometryPredicts)
@@ -169,11 +180,7 @@ MirrorLookupErrors mirrorLookupOnAWall(WaterSettings::ReflectionLookup lookup, b
     WaterSurface* surface = water->getSurface();
     surface->setSize(60.0f);
     if (view.wind) {
-        WindWaves breeze; // 5 m/s over the lake's 140 m
-        breeze.fetch = 140.0f;
-        breeze.direction.set(0.3f, 1.0f);
-        surface->setWind(breeze);
-        surface->setWaveModel(WaterSurface::WAVES_WIND);
+        raiseWind(*surface, 5.0f, 140.0f, osg::Vec2(0.3f, 1.0f)); // a breeze over the lake's 140 m
     } else {
         surface->setResolution(385); // 0.16 m between vertices: the grid within 0.5 mm of the waves
         surface->setWaves({ makeWave(0.3f, 1.0f, 3.0f, 0.04f), makeWave(1.0f, -0.4f, 2.2f, 0.025f) });
@@ -353,11 +360,7 @@ double farStripesContrast(bool wind)
     WaterSurface* surface = water->getSurface();
     surface->setSize(3000.0f);
     if (wind) {
-        WindWaves fresh; // 8 m/s over the water's 3 km
-        fresh.speed = 8.0f;
-        fresh.direction.set(0.0f, 1.0f);
-        surface->setWind(fresh);
-        surface->setWaveModel(WaterSurface::WAVES_WIND);
+        raiseWind(*surface, 8.0f, 0.0f, osg::Vec2(0.0f, 1.0f)); // over the water's 3 km
     } else {
         surface->setWaves({}); // a mirror: every slope drawn (none), no roughness
     }

@@ -1,5 +1,6 @@
 // Rendering with no window: a pbuffer context whose camera draws into an FBO (the only set-up that
 // Mesa's software path runs without X errors), and the frame read back from the FBO's texture.
+#include <algorithm>
 #include <osgWater/Offscreen>
 #include "offscreen/TextureReadback.h"
 #include <OpenThreads/Thread>
@@ -73,18 +74,19 @@ osg::ref_ptr<osg::Image> renderOffscreenFrame(osgViewer::Viewer& viewer, double 
 
 namespace detail {
 
-osg::ref_ptr<osg::Image> readTexture(osg::GraphicsContext* gc, osg::Texture* texture, GLenum format, GLenum type)
+osg::ref_ptr<osg::Image> readTexture(osg::GraphicsContext* gc, osg::Texture* texture, GLenum format, GLenum type, int level)
 {
     gc->makeCurrent();
     osg::Texture::TextureObject* to = texture ? texture->getTextureObject(gc->getState()->getContextID()) : nullptr;
     if (!to) return nullptr;
     osg::ref_ptr<osg::Image> image = new osg::Image;
-    image->allocateImage(texture->getTextureWidth(), texture->getTextureHeight(), 1, format, type);
+    image->allocateImage(std::max(texture->getTextureWidth() >> level, 1), std::max(texture->getTextureHeight() >> level, 1),
+                         1, format, type);
     GLint bound = 0; // restored: osg::State believes it is still bound
     glGetIntegerv(GL_TEXTURE_BINDING_2D, &bound);
     glBindTexture(GL_TEXTURE_2D, to->id());
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glGetTexImage(GL_TEXTURE_2D, 0, format, type, image->data());
+    glGetTexImage(GL_TEXTURE_2D, level, format, type, image->data());
     glBindTexture(GL_TEXTURE_2D, GLuint(bound));
     return image;
 }

@@ -9,10 +9,11 @@
 namespace osgWater {
 namespace detail {
 
-//! Level 0 of `texture` as `format`/`type` pixels (GL_RGB/GL_UNSIGNED_BYTE, GL_RGBA/GL_FLOAT, ...),
-//! rows packed tight; null where the texture has no GL object in this context yet.
+//! Mip level `level` of `texture` as `format`/`type` pixels (GL_RGB/GL_UNSIGNED_BYTE,
+//! GL_RGBA/GL_FLOAT, GL_DEPTH_COMPONENT/GL_FLOAT for a depth texture, ...), rows packed tight;
+//! null where the texture has no GL object in this context yet.
 OSGWATER_EXPORT osg::ref_ptr<osg::Image> readTexture(osg::GraphicsContext* gc, osg::Texture* texture, GLenum format,
-                                                    GLenum type);
+                                                    GLenum type, int level = 0);
 
 }
 }
