@@ -22,8 +22,8 @@ void main()
     // the wind's cascades read at the pixel's footprint on the water (its longer side)
     waterFootprint = max(length(dFdx(vLocal.xy)), length(dFdy(vLocal.xy)));
 #endif
-    vec3 U = waterOnSightRay(osgWater_EyeLocal, vLocal, vDrawnError, eyeSide, N);
-    float roughness = waterShownRoughness;
+    float roughness;
+    vec3 U = waterOnSightRay(osgWater_EyeLocal, vLocal, vDrawnError, eyeSide, N, roughness);
 #else
     const float roughness = 0.0; // a user's mesh: its normals are what there is
     vec3 U = vLocal;

@@ -187,10 +187,6 @@ float waterNewtonStep(vec3 P, vec3 D, vec3 hs)
     return -(P.z - hs.x) / (abs(df) > 1e-6 ? df : 1e30);
 }
 
-// The slopes' variance below the pixel at the point waterOnSightRay found (its roughness; 0 for the
-// sum's waves, all drawn)
-float waterShownRoughness = 0.0;
-
 // Where the line of sight from C through V first meets the analytic surface, and the unit normal
 // there. V: a point of a drawn mesh within `bound` metres of the surface, up or down; eyeSide: 1
 // for an eye above the surface, -1 below. The surface can only cross the ray where the ray lies
@@ -201,7 +197,8 @@ float waterShownRoughness = 0.0;
 // gives one Newton step for free, kept inside the bracket. One path for every fragment, at most
 // eight height evaluations and one of the slope: llvmpipe pays for every side of a branch (early
 // exits measured no faster), so there is no cheaper path to branch to. What a fragment shades: the
-// drawn mesh only decides which pixels hold water.
+// drawn mesh only decides which pixels hold water. `roughness`: the slopes' variance below the
+// pixel there (waterSlopesAndRoughness; 0 for the sum's waves, all drawn), from the same reads.
 #ifdef OSGWATER_WIND
 // (each of the wind's samples reads every cascade's texture: two samples find the crossing as
 // often to within a centimetre, 0.07% of pixels against 0.04% with four, for 10% less frame)
@@ -217,7 +214,7 @@ float waterAbove(vec3 C, vec3 D, float t, float eyeSide)
     return eyeSide * (P.z - waterHeight(P.xy));
 }
 
-vec3 waterOnSightRay(vec3 C, vec3 V, float bound, float eyeSide, out vec3 N)
+vec3 waterOnSightRay(vec3 C, vec3 V, float bound, float eyeSide, out vec3 N, out float roughness)
 {
     vec3 D = V - C;
     float s = max(length(D), 1e-9);
@@ -243,7 +240,7 @@ vec3 waterOnSightRay(vec3 C, vec3 V, float bound, float eyeSide, out vec3 N)
     vec3 P = tHi < 0.0 ? V : C + (tLo + (tHi - tLo) * fLo / (fLo - fHi)) * D;
     vec4 hsr = waterSlopesAndRoughness(P.xy); // the same reads as the slopes alone
     vec3 hs = hsr.xyz;
-    waterShownRoughness = hsr.w;
+    roughness = hsr.w;
     N = normalize(vec3(-hs.yz, 1.0));
     // the slope the normal needs gives a last Newton step for free, kept inside the bracket
     float t = dot(P - C, D) + waterNewtonStep(P, D, hs);

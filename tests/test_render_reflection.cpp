@@ -380,9 +380,9 @@ double farStripesContrast(bool wind)
     h.frame(0.0);
     osg::ref_ptr<osg::Image> img = h.readColor();
     std::vector<double> contrast;
+    // the rows between where flat water 250 m and 1 km out lands
+    const double near = h.pixelOf(osg::Vec3d(0, 250, 0)).y(), far = h.pixelOf(osg::Vec3d(0, 1000, 0)).y();
     for (int row = 0; row < h.height(); ++row) {
-        // the row's distance on flat water, from where the points 250 m and 1 km out land
-        const double near = h.pixelOf(osg::Vec3d(0, 250, 0)).y(), far = h.pixelOf(osg::Vec3d(0, 1000, 0)).y();
         if (row < near || row > far) continue;
         double sum = 0.0, sum2 = 0.0;
         int n = 0;
