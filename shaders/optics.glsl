@@ -62,6 +62,35 @@ float owFresnel(float cosE, float n1, float n2, float q)
 #endif
 }
 
+// The reflectance of a pixel whose normal hides slopes of variance `roughness` (their mean
+// |grad h|^2, alike every way): owFresnel averaged over the facets the eye sees, each weighted by its
+// area seen from the eye (Smith's visible normals: masking does not depend on a facet's slope, only
+// facets turned away are hidden). Along the plane of incidence a slope a tilts the facet towards or
+// away from the eye: its seen area per unit of level is cosE - sinE a, its cosine that over
+// sqrt(1 + a^2 + b^2). Across the plane, b only shortens that, taken at its mean square. Gauss-Legendre
+// in four nodes over a from -3 deviations to where the facets turn away: within 0.007 of the full
+// integral over both slopes (tests). At grazing under a breeze (0.029) F falls from 1 to about 0.45,
+// as Bruneton, Neyret and Holzschuch's mean Fresnel (2010); facing the water it hardly moves.
+float owFresnelOverSlopes(float cosE, float roughness, float n1, float n2, float q)
+{
+    float s = sqrt(max(0.5 * roughness, 1e-12)); // the slopes' deviation along the plane
+    float c = clamp(cosE, 0.0, 1.0);
+    float sinE = sqrt(max(1.0 - c * c, 0.0));
+    float lo = -3.0 * s, hi = min(3.0 * s, c / max(sinE, 1e-6));
+    float across = 1.0 + 0.5 * roughness;
+    const vec4 node = vec4(-0.8611363116, -0.3399810436, 0.3399810436, 0.8611363116);
+    const vec4 weight = vec4(0.3478548451, 0.6521451549, 0.6521451549, 0.3478548451);
+    float sum = 0.0, total = 0.0;
+    for (int i = 0; i < 4; ++i) {
+        float a = 0.5 * (lo + hi) + 0.5 * (hi - lo) * node[i];
+        float seen = max(c - sinE * a, 0.0);
+        float w = weight[i] * seen * exp(-0.5 * a * a / (s * s));
+        sum += w * owFresnel(seen * inversesqrt(across + a * a), n1, n2, q);
+        total += w;
+    }
+    return total > 0.0 ? sum / total : owFresnel(c, n1, n2, q);
+}
+
 // eq. 4; d < 0 means "no bottom along the ray"
 float owAttenuation(float k, float d)
 {

@@ -255,7 +255,11 @@ vec3 owShadeWater(vec3 U, vec3 Nup, vec3 E, float roughness, out vec4 debugOut)
     float F;
 #ifndef OSGWATER_EYE_BELOW
     R = refract(-E, N, n1 / n2); // never zero from air into water
-    F = owFresnel(cosE, n1, n2, osgWater_FresnelQ);
+#ifdef OSGWATER_WIND
+    F = owFresnelOverSlopes(cosE, roughness, n1, n2, osgWater_FresnelQ); // the slopes below the pixel
+#else
+    F = owFresnel(cosE, n1, n2, osgWater_FresnelQ); // the sum's waves are all drawn
+#endif
 #else
 #if defined(OSGWATER_UNDERWATER) && OSGWATER_UNDERWATER == OSGWATER_UNDERWATER_THESIS
         R = (n1 / n2) * (N - E) - N; // eq. 12: never zero, no total internal reflection

@@ -2,6 +2,7 @@
 // a pixel where the thesis's uniform grid is pixels off, and with the eye a micrometre from the
 // water the render's water covers exactly the pixels whose rays meet the waves.
 #include "GLHarness.h"
+#include "optics/Optics.h"
 #include <osgWater/WaterNode>
 #include <osgWater/WaterSurface>
 #include <algorithm>
@@ -300,4 +301,57 @@ TEST(RenderSurface, ThePixelsSlopesAndRoughnessMakeCoxMunksTotalNearAndFar)
     // are below the pixels (0.028), and without them the water would be a mirror
     EXPECT_LT(bands[0].roughness / bands[0].n, 0.5 * coxMunk);
     EXPECT_GT(bands[1].roughness / bands[1].n, 0.5 * coxMunk);
+}
+
+// Where a pixel hides slopes, its reflectance is Fresnel averaged over the facets it sees: across the
+// lake under a breeze, each water pixel's F (DEBUG_FRESNEL) is the CPU mirror's mean over the
+// slopes at that pixel's cosine and roughness (DEBUG_SURFACE and DEBUG_SLOPES of the same frame),
+// and far off, at grazing, it lies well under the reflectance of the pixel's normal alone.
+TEST(RenderSurface, UnderTheWindAPixelsReflectanceIsAveragedOverTheSlopesItHides)
+{
+    Harness h(320, 240);
+    REQUIRE_GL(h);
+    osg::ref_ptr<WaterNode> water = windWater();
+    h.setScene(water.get());
+    const osg::Vec3d eye(0, -60, 3);
+    h.lookAt(eye, osg::Vec3d(0, 0, 0));
+    osg::ref_ptr<osg::Image> out[3];
+    const DebugOutput outputs[3] = { DEBUG_SURFACE, DEBUG_SLOPES, DEBUG_FRESNEL };
+    for (int i = 0; i < 3; ++i) {
+        water->setDebugOutput(outputs[i]);
+        h.frame(3.0);
+        out[i] = h.readColor();
+        ASSERT_TRUE(out[i].valid());
+    }
+    const WaterSettings* s = water->getSettings();
+    std::vector<double> error;
+    double pointF = 0.0, meanF = 0.0;
+    size_t grazing = 0;
+    for (int y = 0; y < out[0]->t(); ++y)
+        for (int x = 0; x < out[0]->s(); ++x) {
+            const float *u = pixel(out[0].get(), x, y), *slopes = pixel(out[1].get(), x, y), *f = pixel(out[2].get(), x, y);
+            if (u[3] != 2.0f || slopes[3] != 2.0f || f[3] != 2.0f) continue;
+            const glm::vec3 E = glm::normalize(glm::vec3(eye.x() - u[0], eye.y() - u[1], eye.z() - u[2]));
+            const glm::vec3 N = optics::faceNormal(glm::normalize(glm::vec3(-slopes[0], -slopes[1], 1.0f)), E);
+            const float cosE = glm::clamp(glm::dot(E, N), 0.0f, 1.0f);
+            const float expected = optics::fresnelOverSlopes(s->getFresnelModel(), cosE, slopes[2], s->getAirIOR(),
+                                                             s->getWaterIOR(), s->getFresnelModelExponent());
+            error.push_back(std::fabs(f[0] - expected));
+            if (cosE < 0.05f) {
+                pointF += optics::fresnelModel(s->getFresnelModel(), cosE, s->getAirIOR(), s->getWaterIOR(),
+                                               s->getFresnelModelExponent());
+                meanF += f[0];
+                ++grazing;
+            }
+        }
+    ASSERT_GT(error.size(), 20000u);
+    ASSERT_GT(grazing, 2000u);
+    const double median = percentile(error, 0.5), p99 = percentile(error, 0.99);
+    RecordProperty("median_error", std::to_string(median));
+    RecordProperty("p99_error", std::to_string(p99));
+    RecordProperty("grazing_point_F", std::to_string(pointF / grazing));
+    RecordProperty("grazing_mean_F", std::to_string(meanF / grazing));
+    EXPECT_LT(median, 2e-3);
+    EXPECT_LT(p99, 0.02); // the normal's and the roughness's reads a Newton step apart
+    EXPECT_LT(meanF / grazing, pointF / grazing - 0.1) << "far off, the slopes bring F down from the normal's";
 }

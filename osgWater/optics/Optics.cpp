@@ -109,6 +109,26 @@ float fresnelModel(int model, float cosE, float n1, float n2, float q)
     return fresnelSchlick(cosE, normalReflectance(n1, n2), q);
 }
 
+float fresnelOverSlopes(int model, float cosE, float roughness, float n1, float n2, float q)
+{
+    const float s = std::sqrt(std::max(0.5f * roughness, 1.0e-12f));
+    const float c = std::min(std::max(cosE, 0.0f), 1.0f);
+    const float sinE = std::sqrt(std::max(1.0f - c * c, 0.0f));
+    const float lo = -3.0f * s, hi = std::min(3.0f * s, c / std::max(sinE, 1.0e-6f));
+    const float across = 1.0f + 0.5f * roughness;
+    const float node[4] = { -0.8611363116f, -0.3399810436f, 0.3399810436f, 0.8611363116f };
+    const float weight[4] = { 0.3478548451f, 0.6521451549f, 0.6521451549f, 0.3478548451f };
+    float sum = 0.0f, total = 0.0f;
+    for (int i = 0; i < 4; ++i) {
+        const float a = 0.5f * (lo + hi) + 0.5f * (hi - lo) * node[i];
+        const float seen = std::max(c - sinE * a, 0.0f);
+        const float w = weight[i] * seen * std::exp(-0.5f * a * a / (s * s));
+        sum += w * fresnelModel(model, seen / std::sqrt(across + a * a), n1, n2, q);
+        total += w;
+    }
+    return total > 0.0f ? sum / total : fresnelModel(model, c, n1, n2, q);
+}
+
 FromBelow underwaterThesis(const glm::vec3& E, const glm::vec3& N, float n1, float n2, float q)
 {
     FromBelow r;

@@ -49,6 +49,10 @@ OSGWATER_EXPORT float fresnelExact(float cosI, float n1, float n2);
 //! (eq. 7-8), 1 power, 2 exact, 3 reciprocal power. Evaluated at cosE (Schlick's f from n1, n2);
 //! q is the model's exponent (WaterSettings::getFresnelModelExponent).
 OSGWATER_EXPORT float fresnelModel(int model, float cosE, float n1, float n2, float q);
+//! fresnelModel averaged over the facets the eye sees where the pixel's normal hides slopes of
+//! variance `roughness` (mean |grad h|^2, alike every way), each facet weighted by its area seen from
+//! the eye (owFresnelOverSlopes: four Gauss-Legendre nodes along the plane of incidence).
+OSGWATER_EXPORT float fresnelOverSlopes(int model, float cosE, float roughness, float n1, float n2, float q);
 
 //! The surface seen from below (thesis §7.5): E unit towards the eye (down, into the water), N unit
 //! normal on the eye's side, n1 water, n2 air. R: direction of the transmitted ray (not unit for the
