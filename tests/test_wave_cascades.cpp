@@ -1,7 +1,8 @@
 // The wind sea's FFT cascades (surface/WaveCascades) against the spectrum they realise: their bands
 // tile the wavenumbers without gap, every texel is the direct sum over the cascade's bins, the
 // realised variance is the spectrum's integral, nothing repeats inside the water (autocorrelation and
-// the strongest bins of a window's spectrum), the height query meets the choppy surface, and bad
+// the strongest bins of a window's spectrum), the height query meets the choppy surface and its
+// normal is the displaced surface's, and bad
 // parameters give a flat or finite sea. No GPU.
 #include "surface/WaveCascades.h"
 #include <gtest/gtest.h>
@@ -144,6 +145,8 @@ TEST(WaveCascades, EveryTexelIsTheDirectSumOverItsCascadesBins)
                     EXPECT_NEAR(fft.displacement[f], direct.displacement[f], 1e-4 * scale) << "cascade " << c << " field " << f << " t " << t;
                 for (int f = 0; f < 2; ++f)
                     EXPECT_NEAR(fft.slope[f], direct.slope[f], 1e-4 * scale * w.bands()[c].kHigh) << "cascade " << c << " slope " << f;
+                for (int f = 0; f < 3; ++f)
+                    EXPECT_NEAR(fft.jacobian[f], direct.jacobian[f], 1e-4 * scale * w.bands()[c].kHigh) << "cascade " << c << " jacobian " << f;
             }
         }
         EXPECT_GE(held, WaveCascades::CASCADES - 1);
@@ -284,6 +287,59 @@ TEST(WaveCascades, TheHeightQueryMeetsTheChoppySurface)
         EXPECT_NEAR(w.height(x, y), at.displacement.z(), 1e-3) << "over (" << x << ", " << y << ")";
     }
     EXPECT_GT(moved, 0.1); // the waves do move the surface sideways, by more than the tolerance
+}
+
+// The choppy surface's normal is its tangents' cross product: the displaced point
+// (q + D(q), h(q)) differenced along q from the direct sums, against the slopes the texels'
+// derivatives give (displacedSlope) and the height query's normal over the displaced point
+TEST(WaveCascades, TheChoppyNormalIsTheDisplacedSurfacesTangentsCross)
+{
+    WaveCascades::Params p = freshWind();
+    p.size = 32; // direct sums over every bin
+    p.choppiness = 1.0;
+    WaveCascades w(p);
+    w.update(7.0);
+    auto displaced = [&w](double x, double y) {
+        const WaveCascades::Texel t = w.directSum(x, y);
+        return osg::Vec3d(x + t.displacement.x(), y + t.displacement.y(), t.displacement.z());
+    };
+    std::mt19937 engine(5);
+    std::uniform_real_distribution<double> across(-200.0, 200.0);
+    // m: a fiftieth of a radian of the shortest wave held (about 5 cm), so the central differences'
+    // own error, (k e)^2 / 6 of a slope, stays under 1e-4, and the float sums' rounding over 2e too
+    const double e = 2e-4;
+    double worst = 0.0, tilted = 0.0;
+    int tested = 0;
+    for (int k = 0; k < 200; ++k) {
+        const double x = across(engine), y = across(engine);
+        const WaveCascades::Texel t = w.directSum(x, y);
+        const double stretch = (1.0 + t.jacobian.x()) * (1.0 + t.jacobian.y()) - double(t.jacobian.z()) * t.jacobian.z();
+        if (stretch < 2.0 * WaveCascades::MIN_STRETCH) continue; // near a fold, where the slopes are clamped
+        ++tested;
+        osg::Vec3d n = (displaced(x + e, y) - displaced(x - e, y)) ^ (displaced(x, y + e) - displaced(x, y - e));
+        n.normalize();
+        const osg::Vec2d slope = t.displacedSlope();
+        osg::Vec3d fromTexel(-slope.x(), -slope.y(), 1.0);
+        fromTexel.normalize();
+        worst = std::max(worst, (n - fromTexel).length());
+        tilted = std::max(tilted, (n - osg::Vec3d(osg::Vec3d(-t.slope.x(), -t.slope.y(), 1.0) / osg::Vec3d(-t.slope.x(), -t.slope.y(), 1.0).length())).length());
+    }
+    ASSERT_GT(tested, 150);
+    std::cout << tested << " points: the texels' normal " << worst << " from the differenced one, the undisplaced slopes' "
+              << tilted << "\n";
+    EXPECT_LT(worst, 1e-3);
+    EXPECT_GT(tilted, 1e-2); // the undisplaced slopes are not the displaced surface's
+
+    // the query's normal over a displaced point is the texel's there (sampled, not summed)
+    for (int k = 0; k < 50; ++k) {
+        const double qx = across(engine), qy = across(engine);
+        const WaveCascades::Texel at = w.sample(qx, qy);
+        const osg::Vec2d slope = at.displacedSlope();
+        osg::Vec3d expected(-slope.x(), -slope.y(), 1.0);
+        expected.normalize();
+        const osg::Vec3d n = w.normal(qx + at.displacement.x(), qy + at.displacement.y());
+        EXPECT_LT((n - expected).length(), 1e-4) << qx << ", " << qy;
+    }
 }
 
 TEST(WaveCascades, TheSameSeedGivesTheSameSeaAndAnotherADifferentOne)

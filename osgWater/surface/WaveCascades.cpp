@@ -98,7 +98,7 @@ double repeatGap(double a, double b, double extent)
 
 struct WaveCascades::Plans {
     fftwf_plan plan = nullptr;
-    fftwf_complex* fields[3] = { nullptr, nullptr, nullptr }; // the packed transforms, in place
+    fftwf_complex* fields[4] = { nullptr, nullptr, nullptr, nullptr }; // the packed transforms, in place
     ~Plans()
     {
         for (fftwf_complex* f : fields) fftwf_free(f);
@@ -279,13 +279,14 @@ void WaveCascades::evaluate(Cascade& c, double t)
     if (c.bins.empty()) return; // flat, as made
     const size_t count = size_t(_params.size) * _params.size;
     const float chop = float(_params.choppiness);
-    const int transforms = chop != 0.0f ? 3 : 2;
-    float* f[3];
-    for (int i = 0; i < 3; ++i) f[i] = reinterpret_cast<float*>(_plans->fields[i]);
+    const int transforms = chop != 0.0f ? 4 : 2;
+    float* f[4];
+    for (int i = 0; i < 4; ++i) f[i] = reinterpret_cast<float*>(_plans->fields[i]);
     for (int i = 0; i < transforms; ++i) std::fill(f[i], f[i] + 2 * count, 0.0f);
     // Each field is real, so its spectrum is Hermitian; two of them go through one complex
-    // transform as A + i B: (h, dh/dx), (dh/dy, dx), (dy, -). Written out in real arithmetic:
-    // std::complex's products check for NaN and infinity, and cost more than the FFTs.
+    // transform as A + i B: (h, dh/dx), (dh/dy, Dx), (Dy, dDx/dx), (dDy/dy, dDx/dy). Written out
+    // in real arithmetic: std::complex's products check for NaN and infinity, and cost more than
+    // the FFTs.
     for (const Bin& bin : c.bins) {
         const float phase = float(std::fmod(bin.omega * t, kTwoPi)); // exact to double precision at any t
         const float cs = std::cos(phase), sn = std::sin(phase);
@@ -299,17 +300,25 @@ void WaveCascades::evaluate(Cascade& c, double t)
         float* b = f[1] + 2 * bin.index; // i ky h + i (i kx/|k| h chop)
         b[0] = -towardsX * hr - bin.ky * hi;
         b[1] = bin.ky * hr - towardsX * hi;
-        if (transforms == 3) {
-            float* d = f[2] + 2 * bin.index; // i ky/|k| h chop
-            d[0] = -towardsY * hi;
-            d[1] = towardsY * hr;
+        if (transforms == 4) {
+            // Dy = i ky/|k| h chop; dDx/dx = -chop kx^2/|k| h, dDy/dy = -chop ky^2/|k| h,
+            // dDx/dy = -chop kx ky/|k| h: A + i B with i (c h) = c (-hi + i hr)
+            const float xx = chop * bin.kx * bin.kx / bin.k, yy = chop * bin.ky * bin.ky / bin.k;
+            const float xy = chop * bin.kx * bin.ky / bin.k;
+            float* d = f[2] + 2 * bin.index; // Dy + i dDx/dx
+            d[0] = (xx - towardsY) * hi;
+            d[1] = (towardsY - xx) * hr;
+            float* e = f[3] + 2 * bin.index; // dDy/dy + i dDx/dy
+            e[0] = -yy * hr + xy * hi;
+            e[1] = -yy * hi - xy * hr;
         }
     }
     for (int i = 0; i < transforms; ++i) fftwf_execute_dft(_plans->plan, _plans->fields[i], _plans->fields[i]);
     for (size_t i = 0; i < count; ++i) {
         Texel& texel = c.texels[i];
-        texel.displacement.set(f[1][2 * i + 1], transforms == 3 ? f[2][2 * i] : 0.0f, f[0][2 * i], 0.0f);
+        texel.displacement.set(f[1][2 * i + 1], transforms == 4 ? f[2][2 * i] : 0.0f, f[0][2 * i], 0.0f);
         texel.slope.set(f[0][2 * i + 1], f[1][2 * i]);
+        if (transforms == 4) texel.jacobian.set(f[2][2 * i + 1], f[3][2 * i], f[3][2 * i + 1]);
     }
 }
 
@@ -331,13 +340,14 @@ WaveCascades::Texel WaveCascades::sample(double x, double y) const
         sum.displacement += (a.displacement * (1 - wx) + b.displacement * wx) * (1 - wy)
                             + (d.displacement * (1 - wx) + e.displacement * wx) * wy;
         sum.slope += (a.slope * (1 - wx) + b.slope * wx) * (1 - wy) + (d.slope * (1 - wx) + e.slope * wx) * wy;
+        sum.jacobian += (a.jacobian * (1 - wx) + b.jacobian * wx) * (1 - wy) + (d.jacobian * (1 - wx) + e.jacobian * wx) * wy;
     }
     return sum;
 }
 
 WaveCascades::Texel WaveCascades::directSum(double x, double y, int only) const
 {
-    double h = 0.0, dx = 0.0, dy = 0.0, sx = 0.0, sy = 0.0;
+    double h = 0.0, dx = 0.0, dy = 0.0, sx = 0.0, sy = 0.0, xx = 0.0, yy = 0.0, xy = 0.0;
     for (size_t c = 0; c < _cascades.size(); ++c) {
         if (only >= 0 && size_t(only) != c) continue;
         for (const Bin& bin : _cascades[c].bins) {
@@ -351,11 +361,16 @@ WaveCascades::Texel WaveCascades::directSum(double x, double y, int only) const
             sy -= ky * wave.imag();
             dx -= kx / bin.k * wave.imag() * _params.choppiness; // Re(i k/|k| h e^ikx): towards the crests, as Gerstner's
             dy -= ky / bin.k * wave.imag() * _params.choppiness;
+            const double chopOverK = _params.choppiness / bin.k * wave.real(); // Re(i k_j i k_i/|k| h e^ikx)
+            xx -= kx * kx * chopOverK;
+            yy -= ky * ky * chopOverK;
+            xy -= kx * ky * chopOverK;
         }
     }
     Texel t;
     t.displacement.set(float(dx), float(dy), float(h), 0.0f);
     t.slope.set(float(sx), float(sy));
+    t.jacobian.set(float(xx), float(yy), float(xy));
     return t;
 }
 
@@ -380,11 +395,20 @@ double WaveCascades::height(double x, double y) const
     return over(x, y).displacement.z();
 }
 
+osg::Vec2d WaveCascades::Texel::displacedSlope() const
+{
+    // the tangents' cross product is (J^-1 grad h) det J in x and y and det J in z, with J the
+    // (symmetric) Jacobian I + grad D: the slopes are J^-1 grad h, its inverse the adjugate / det
+    const double xx = 1.0 + jacobian.x(), yy = 1.0 + jacobian.y(), xy = jacobian.z();
+    const double det = std::max(xx * yy - xy * xy, MIN_STRETCH);
+    return osg::Vec2d(yy * slope.x() - xy * slope.y(), xx * slope.y() - xy * slope.x()) / det;
+}
+
 osg::Vec3d WaveCascades::normal(double x, double y) const
 {
     if (!std::isfinite(x) || !std::isfinite(y)) return osg::Vec3d(0.0, 0.0, 1.0);
-    const Texel s = over(x, y);
-    osg::Vec3d n(-s.slope.x(), -s.slope.y(), 1.0);
+    const osg::Vec2d slope = over(x, y).displacedSlope();
+    osg::Vec3d n(-slope.x(), -slope.y(), 1.0);
     n.normalize();
     return n;
 }

@@ -47,12 +47,22 @@ public:
         unsigned int seed = 1;
     };
 
-    //! One texel: the displacement (x, y, and the height) and the slopes dh/dx, dh/dy of the
-    //! undisplaced surface there.
+    //! One texel: the displacement (x, y, and the height), the slopes dh/dx, dh/dy of the
+    //! undisplaced surface there, and the horizontal displacement's derivatives (zero without
+    //! choppiness): the displaced surface's tangents are (1 + dDx/dx, dDy/dx, dh/dx) and
+    //! (dDx/dy, 1 + dDy/dy, dh/dy), and dDx/dy = dDy/dx (the displacement is a gradient).
     struct Texel {
         osg::Vec4f displacement; // dx, dy, h, 0
         osg::Vec2f slope;
+        osg::Vec3f jacobian; // dDx/dx, dDy/dy, dDx/dy
+        //! dh/dx, dh/dy of the displaced surface, over the point this texel's displacement lands
+        //! on: the slopes through the inverse of the displacement's Jacobian, its determinant kept
+        //! above MIN_STRETCH where the choppy crests would fold over (mirrored by waves.glsl).
+        osg::Vec2d displacedSlope() const;
     };
+    //! The least area a choppy crest's displacement squeezes a unit of surface into: below it the
+    //! surface would fold over itself, and its slopes are taken as they are at this squeeze.
+    static constexpr double MIN_STRETCH = 0.1;
 
     explicit WaveCascades(const Params& params);
     ~WaveCascades();
@@ -88,7 +98,7 @@ public:
     //! The height of the displaced surface over (x, y): the undisplaced point whose displacement
     //! lands there is found by fixed-point iteration, then its height is taken.
     double height(double x, double y) const;
-    //! The unit normal of the displaced surface over (x, y), from the slopes at that point.
+    //! The unit normal of the displaced surface over (x, y): its tangents' cross product there.
     osg::Vec3d normal(double x, double y) const;
 
     //! The same fields summed over every bin directly, in double precision, at the undisplaced
