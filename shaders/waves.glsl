@@ -1,4 +1,4 @@
-#pragma import_defines(OSGWATER_WIND)
+#pragma import_defines(OSGWATER_WIND, OSGWATER_CHOPPY)
 // The waves: the surface's height, slopes and normal, and what the drawn mesh may miss of them.
 uniform float osgWater_Level;
 
@@ -18,20 +18,81 @@ uniform float osgWater_UnresolvedSlopes; // the slopes' variance no cascade hold
 // reads the texels as the CPU does). Set by a fragment shader's main before it asks for the waves.
 float waterFootprint = 0.0;
 
+#ifdef OSGWATER_CHOPPY
+// Choppy waves (OSGWATER_CHOPPY): the point q of the undisplaced tiles lands at q + D(q), at the
+// height h(q). osgWater_WaveHeights holds (h, Dx, Dy) per layer, osgWater_WaveJacobians the
+// displacement's derivatives (dDx/dx, dDy/dy, dDx/dy), mipmapped. Mirrored by WaveCascades::height
+// and normal (SpectralWaves).
+uniform sampler2DArray osgWater_WaveJacobians;
+uniform float osgWater_ChoppyChord; // SpectralWaves::choppyChord
+const float kMinStretch = 0.1;      // WaveCascades::MIN_STRETCH
+
+// (h, Dx, Dy) at the undisplaced point q: every cascade at level 0, bilinear
+vec3 waterDisplacementAt(vec2 q)
+{
+    vec3 d = vec3(0.0);
+    for (int c = 0; c < 5; ++c) {
+        if (c >= osgWater_CascadeCount) break;
+        vec4 s = osgWater_Cascades[c];
+        d += textureLod(osgWater_WaveHeights, vec3(q * s.x + 0.5 / osgWater_CascadeTexels, float(c)), 0.0).xyz;
+    }
+    return d;
+}
+
+// The undisplaced point whose displacement lands on p, and (h, Dx, Dy) there: fixed-point
+// iteration q = p - D(q) from q = p. Each step shrinks the miss by the displacement's derivatives
+// (about 0.1, at a squeezed crest 0.5): two leave a lake's few centimetres of displacement well
+// under a millimetre off, where the CPU's query iterates until it settles.
+const int kChoppyIterations = 2;
+
+vec2 waterUndisplaced(vec2 p, out vec3 d)
+{
+    vec2 q = p;
+    d = waterDisplacementAt(q);
+    for (int i = 0; i < kChoppyIterations; ++i) {
+        q = p - d.yz;
+        d = waterDisplacementAt(q);
+    }
+    return q;
+}
+
+// the displaced surface's slopes from the undisplaced one's, g, and the displacement's derivatives
+// J there: J's inverse applied to g (WaveCascades::Texel::displacedSlope)
+vec2 waterDisplacedSlope(vec3 J, vec2 g)
+{
+    float xx = 1.0 + J.x, yy = 1.0 + J.y, xy = J.z;
+    return vec2(yy * g.x - xy * g.y, xx * g.y - xy * g.x) / max(xx * yy - xy * xy, kMinStretch);
+}
+#endif
+
 // (height, dh/dx, dh/dy, roughness) filtered over `footprint` metres. The roughness is the slopes'
 // variance the point's normal does not show: per cascade, the mean |grad h|^2 under the filter less
 // the square of the mean slopes (what the filtering averaged away; the cascades are independent, so
 // their variances add), plus the slopes no cascade holds.
 vec4 waterSampleWithRoughness(vec2 p, float footprint)
 {
+#ifdef OSGWATER_CHOPPY
+    // read where the point over p came from (found at level 0: far off the short waves' few
+    // millimetres of displacement no longer matter); the roughness is the undisplaced slopes'
+    vec3 d;
+    p = waterUndisplaced(p, d);
+    vec3 J = vec3(0.0);
+#endif
     vec4 r = vec4(osgWater_Level, 0.0, 0.0, osgWater_UnresolvedSlopes);
     for (int c = 0; c < 5; ++c) {
         if (c >= osgWater_CascadeCount) break;
         vec4 s = osgWater_Cascades[c];
         float lod = log2(max(footprint * s.x * osgWater_CascadeTexels, 1e-6));
-        vec4 t = textureLod(osgWater_WaveCascades, vec3(p * s.x + 0.5 / osgWater_CascadeTexels, float(c)), lod);
+        vec3 at = vec3(p * s.x + 0.5 / osgWater_CascadeTexels, float(c));
+        vec4 t = textureLod(osgWater_WaveCascades, at, lod);
         r += vec4(t.xyz, max(t.w - dot(t.yz, t.yz), 0.0));
+#ifdef OSGWATER_CHOPPY
+        J += textureLod(osgWater_WaveJacobians, at, lod).xyz;
+#endif
     }
+#ifdef OSGWATER_CHOPPY
+    r.yz = waterDisplacedSlope(J, r.yz);
+#endif
     return r;
 }
 
@@ -46,6 +107,11 @@ vec3 waterSampleOver(vec2 p, float footprint)
 // search reads it several times a fragment
 float waterHeight(vec2 p)
 {
+#ifdef OSGWATER_CHOPPY
+    vec3 d;
+    waterUndisplaced(p, d);
+    return osgWater_Level + d.x;
+#else
     float h = osgWater_Level;
     for (int c = 0; c < 5; ++c) {
         if (c >= osgWater_CascadeCount) break;
@@ -53,6 +119,7 @@ float waterHeight(vec2 p)
         h += textureLod(osgWater_WaveHeights, vec3(p * s.x + 0.5 / osgWater_CascadeTexels, float(c)), 0.0).x;
     }
     return h;
+#endif
 }
 
 // The height a mesh whose cells are `cell` metres across draws: the cascades averaged over two
@@ -75,16 +142,22 @@ vec4 waterSlopesAndRoughness(vec2 p)
 
 // How far a mesh whose cells are `cell` metres across can lie from the surface: each cascade
 // taken as one wave as high as its height bound and as short as its band's shortest, faded (or
-// cut into chords) as the sum of sines' waves are.
+// cut into chords) as the sum of sines' waves are. Choppy, a chord spans more of the undisplaced
+// wave where a crest is squeezed (osgWater_ChoppyChord times as much at most).
 float waterDrawnErrorBound(float cell, bool faded)
 {
+#ifdef OSGWATER_CHOPPY
+    float chord = cell * osgWater_ChoppyChord;
+#else
+    float chord = cell;
+#endif
     float e = 0.0;
     for (int c = 0; c < 5; ++c) {
         if (c >= osgWater_CascadeCount) break;
         vec4 s = osgWater_Cascades[c];
         float cellsPerWave = 6.2831853 / (max(s.z, 1e-9) * cell);
         float keep = faded ? smoothstep(2.0, 4.0, cellsPerWave) : 1.0;
-        e += s.y * (1.0 - keep * cos(3.1415927 * min(1.0 / cellsPerWave, 1.0)));
+        e += s.y * (1.0 - keep * cos(3.1415927 * min(chord * max(s.z, 1e-9) / 6.2831853, 1.0)));
     }
     return e;
 }

@@ -7,6 +7,7 @@
 #include <osgWater/WaterSurface>
 #include <algorithm>
 #include <cmath>
+#include <iostream>
 #include <vector>
 
 using namespace testing_gl;
@@ -175,9 +176,11 @@ TEST(RenderSurface, EachFragmentShadesWhereItsRayMeetsTheWaves)
     Harness h(320, 240);
     REQUIRE_GL(h);
     const double t = 3.0;
-    for (WaterSurface::WaveModel model : { WaterSurface::WAVES_SUM, WaterSurface::WAVES_WIND }) {
+    for (int kind = 0; kind < 3; ++kind) {
+        const WaterSurface::WaveModel model = kind == 0 ? WaterSurface::WAVES_SUM : WaterSurface::WAVES_WIND;
         osg::ref_ptr<WaterNode> water = lakeWater(WaterSurface::MESH_EYE_RINGS);
-        WindWaves breeze; // the wind's: 5 m/s over the lake's 140 m
+        WindWaves breeze; // the wind's: 5 m/s over the lake's 140 m, the last choppy
+        breeze.choppiness = kind == 2 ? 1.0f : 0.0f;
         water->getSurface()->setWind(breeze);
         water->getSurface()->setWaveModel(model);
         water->setDebugOutput(DEBUG_SURFACE);
@@ -190,8 +193,10 @@ TEST(RenderSurface, EachFragmentShadesWhereItsRayMeetsTheWaves)
         else h.lookAt(osg::Vec3d(6, -36, 3), osg::Vec3d(5, -31, -1.5));
         h.frame(t);
         const std::vector<double> e = shadedPointErrors(h, *water, t);
-        const std::string name = WaterSurface::waveModelName(model);
+        const std::string name = std::string(WaterSurface::waveModelName(model)) + (kind == 2 ? "_choppy" : "");
         ASSERT_GT(e.size(), 320u * 100u) << name;
+        std::cout << name << ": " << 100.0 * double(std::count_if(e.begin(), e.end(), [](double d) { return d > 0.01; })) / double(e.size())
+                  << "% of pixels over 1 cm off, median " << 1e3 * percentile(e, 0.5) << " mm\n";
         const double off = double(std::count_if(e.begin(), e.end(), [](double d) { return d > 0.01; })) / double(e.size());
         RecordProperty("share_over_1cm_" + name, std::to_string(off));
         RecordProperty("median_m_" + name, std::to_string(percentile(e, 0.5)));
@@ -204,11 +209,12 @@ TEST(RenderSurface, EachFragmentShadesWhereItsRayMeetsTheWaves)
 }
 
 namespace {
-osg::ref_ptr<WaterNode> windWater()
+osg::ref_ptr<WaterNode> windWater(float choppiness = 0.0f)
 {
     osg::ref_ptr<WaterNode> water = lakeWater(WaterSurface::MESH_EYE_RINGS);
     WindWaves breeze; // 5 m/s over the lake's 140 m
     breeze.direction.set(1.0f, 0.4f);
+    breeze.choppiness = choppiness;
     water->getSurface()->setWind(breeze);
     water->getSurface()->setWaveModel(WaterSurface::WAVES_WIND);
     return water;
@@ -218,36 +224,56 @@ osg::ref_ptr<WaterNode> windWater()
 // The wind's waves: the height the GPU reads from the cascades' textures at each shaded point is
 // the CPU height query's there (the same texels, filtered the same way). Looking down from 3 m,
 // a pixel spans about a centimetre, so the fragments read the finest levels; the query reads
-// level 0 (what the shortest waves' mip blur leaves is under a millimetre of height).
+// level 0 (what the shortest waves' mip blur leaves is under a millimetre of height). Choppy, the
+// GPU inverts the displacement in two fixed-point steps where the query iterates until it
+// settles, and the slopes each pixel shades with are the displaced surface's, as the query's
+// normal is: within 7% of their spread RMS (the far pixels read mip levels, the query level 0).
 TEST(RenderSurface, TheWindsWavesDrawnAreTheHeightQuerys)
 {
     Harness h(256, 256);
     REQUIRE_GL(h);
     const double t = 7.25;
-    osg::ref_ptr<WaterNode> water = windWater();
-    water->setDebugOutput(DEBUG_SURFACE);
-    h.setScene(water.get());
-    h.lookAt(osg::Vec3d(3, -2, 3.0), osg::Vec3d(4, 0, 0));
-    h.frame(t);
-    osg::ref_ptr<osg::Image> img = h.readColor();
-    ASSERT_TRUE(img.valid());
-    double sum2 = 0.0, spread2 = 0.0;
-    size_t n = 0;
-    for (int y = 0; y < img->t(); ++y)
-        for (int x = 0; x < img->s(); ++x) {
-            const float* p = pixel(img.get(), x, y);
-            if (p[3] != 2.0f) continue;
-            const double cpu = water->getSurface()->height(p[0], p[1], t);
-            sum2 += (p[2] - cpu) * (p[2] - cpu);
-            spread2 += cpu * cpu;
-            ++n;
-        }
-    ASSERT_GT(n, 256u * 200u);
-    const double rms = std::sqrt(sum2 / n), waves = std::sqrt(spread2 / n);
-    RecordProperty("rms_mm", std::to_string(1e3 * rms));
-    // the waves are there (a few centimetres of height), and the two agree within 1 mm RMS
-    EXPECT_GT(waves, 5e-3);
-    EXPECT_LT(rms, 1e-3) << "metres, against waves of " << waves << " m RMS";
+    for (float choppiness : { 0.0f, 1.0f }) {
+        const std::string name = choppiness > 0.0f ? "choppy" : "unchoppy";
+        osg::ref_ptr<WaterNode> water = windWater(choppiness);
+        water->setDebugOutput(DEBUG_SURFACE);
+        h.setScene(water.get());
+        h.lookAt(osg::Vec3d(3.5, -1, 1.0), osg::Vec3d(4, 0, 0));
+        h.frame(t);
+        osg::ref_ptr<osg::Image> img = h.readColor();
+        ASSERT_TRUE(img.valid());
+        water->setDebugOutput(DEBUG_SLOPES);
+        h.frame(t);
+        osg::ref_ptr<osg::Image> slopes = h.readColor();
+        ASSERT_TRUE(slopes.valid());
+        double sum2 = 0.0, spread2 = 0.0, slopeMiss2 = 0.0, slopeSpread2 = 0.0;
+        size_t n = 0;
+        for (int y = 0; y < img->t(); ++y)
+            for (int x = 0; x < img->s(); ++x) {
+                const float* p = pixel(img.get(), x, y);
+                const float* g = pixel(slopes.get(), x, y);
+                if (p[3] != 2.0f || g[3] != 2.0f) continue;
+                const double cpu = water->getSurface()->height(p[0], p[1], t);
+                sum2 += (p[2] - cpu) * (p[2] - cpu);
+                spread2 += cpu * cpu;
+                const osg::Vec3d normal = water->getSurface()->normal(p[0], p[1], t);
+                const osg::Vec2d cpuSlope(-normal.x() / normal.z(), -normal.y() / normal.z());
+                slopeMiss2 += (osg::Vec2d(g[0], g[1]) - cpuSlope).length2();
+                slopeSpread2 += cpuSlope.length2();
+                ++n;
+            }
+        ASSERT_GT(n, 256u * 200u) << name;
+        const double rms = std::sqrt(sum2 / n), waves = std::sqrt(spread2 / n);
+        const double slopeRms = std::sqrt(slopeMiss2 / n), slopeSpread = std::sqrt(slopeSpread2 / n);
+        RecordProperty("rms_mm_" + name, std::to_string(1e3 * rms));
+        RecordProperty("slope_rms_" + name, std::to_string(slopeRms));
+        std::cout << name << ": heights " << 1e3 * rms << " mm RMS apart (waves " << 1e3 * waves << " mm), slopes " << slopeRms
+                  << " RMS apart (slopes " << slopeSpread << ")\n";
+        // the waves are there (a few centimetres of height), and the two agree within 1 mm RMS
+        EXPECT_GT(waves, 5e-3) << name;
+        EXPECT_LT(rms, 1e-3) << name << ": metres, against waves of " << waves << " m RMS";
+        EXPECT_LT(slopeRms, 0.07 * slopeSpread) << name;
+    }
 }
 
 // Cox and Munk's mean square slope, 0.003 + 0.00512 U, at every distance: a pixel's slopes (the

@@ -86,6 +86,7 @@ struct Group {
     bool rotation, apparentEye, glow, reflection, refraction;
     DebugOutput debug;
     float wind; // m/s: the wind's waves (one group in three), else < 0: the sum of sines
+    float choppiness; // theirs
 };
 // ... cheap ones (uniforms, the camera, the waves) per configuration.
 struct Config {
@@ -146,6 +147,8 @@ std::vector<Group> groups()
         // group; each configuration moves them to its time)
         const float winds[] = { 0.0f, 2.0f, 5.0f, 12.0f, 40.0f };
         x.wind = i % 3 == 2 ? pick(winds, i / 3) : -1.0f;
+        const float choppiness[] = { 0.0f, 1.0f, 0.5f };
+        x.choppiness = pick(choppiness, i / 2);
         g.push_back(x);
     }
     return g;
@@ -192,7 +195,7 @@ std::string describe(const Group& g, const Config& c)
       << ", fresnel " << g.fresnel << ", underwater " << g.underwater << ", gather " << g.gather << (g.areaMesh ? " (mesh)" : "") << (g.procedural ? (g.perPixel ? " (procedural per pixel)" : " (procedural)") : "") << (g.reflective ? " (reflective)" : "") << (g.tile > 0.0f ? " (tiled)" : "") << (g.environment ? ", environment map" : "") << ", textures "
       << g.textureSize << ", photons " << g.photonGrid << ", viewport " << g.viewport << ", rotation " << g.rotation
       << (g.rotation && !g.apparentEye ? " (thesis)" : "")
-      << ", glow " << g.glow << ", debug " << g.debug << (g.wind >= 0.0f ? ", wind " + std::to_string(g.wind) + " m/s" : std::string())
+      << ", glow " << g.glow << ", debug " << g.debug << (g.wind >= 0.0f ? ", wind " + std::to_string(g.wind) + " m/s, choppiness " + std::to_string(g.choppiness) : std::string())
       << "; eye height " << c.eyeHeight << ", pitch " << c.pitch
       << ", yaw " << c.yaw << ", sun " << c.sunElevation << ", IOR " << c.ior << ", t " << c.time << ", amplitude "
       << c.amplitude << ", near " << c.nearPlane;
@@ -233,6 +236,7 @@ void apply(WaterNode* water, const Group& g)
         WindWaves wind;
         wind.speed = g.wind;
         wind.direction.set(0.3f, 1.0f);
+        wind.choppiness = g.choppiness;
         water->getSurface()->setWind(wind);
     }
     water->getSurface()->setWaveModel(g.wind >= 0.0f ? WaterSurface::WAVES_WIND : WaterSurface::WAVES_SUM);

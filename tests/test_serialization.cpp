@@ -1,4 +1,5 @@
 // osgDB wrappers: .osgt against an expected text, exact .osgt/.osgb round trips, and bad files.
+#include "serialize/LayoutVersion.h"
 #include <osgWater/WaterNode>
 #include <osgDB/ReadFile>
 #include <osgDB/Registry>
@@ -375,19 +376,20 @@ TEST(Serialization, ABinaryFileOfAnotherLayoutIsRefusedWithAMessage)
     osg::ref_ptr<WaterNode> w = pond();
     ASSERT_TRUE(osgDB::writeNodeFile(*w, tmp("layout.osgb")));
     const std::string bytes = slurp(tmp("layout.osgb"));
-    // the stamp, little-endian: layout 1 in the low half of 0x6F57xxxx ("oW")
-    const std::string stamp("\x01\x00\x57\x6F", 4);
+    // the stamp, little-endian: the layout in the low half of 0x6F57xxxx ("oW")
+    const std::string stamp = std::string(1, char(detail::kBinaryLayout)) + std::string("\x00\x57\x6F", 3);
     const size_t at = bytes.find(stamp);
     ASSERT_NE(at, std::string::npos) << "no layout stamp in the file";
     ASSERT_TRUE(readWater(tmp("layout.osgb")).valid()) << "this layout's own file did not read";
 
     std::string other = bytes;
-    other[at] = 2; // layout 2 where the WaterNode starts
-    spit(tmp("layout2.osgb"), other);
+    other[at] = char(detail::kBinaryLayout + 1); // the next layout where the WaterNode starts
+    spit(tmp("layout_next.osgb"), other);
     std::string unstamped = bytes;
     unstamped.erase(at, 4); // a file from before layouts were numbered
     spit(tmp("unstamped.osgb"), unstamped);
-    const std::pair<const char*, const char*> cases[] = { { "layout2.osgb", "written in binary layout 2" },
+    const std::string next = "written in binary layout " + std::to_string(detail::kBinaryLayout + 1);
+    const std::pair<const char*, const char*> cases[] = { { "layout_next.osgb", next.c_str() },
                                                           { "unstamped.osgb", "before binary layouts were numbered" } };
     for (const auto& c : cases) {
         ScopedWarnCapture warnings;
@@ -409,6 +411,7 @@ TEST(Serialization, TheWindsWavesRoundTripAsTheirFields)
     wind.depth = 3.5f;
     wind.spread = 0.25f;
     wind.swell = 0.5f;
+    wind.choppiness = 0.75f;
     wind.seed = 42;
     w->getSurface()->setWind(wind);
     w->getSurface()->setWaveModel(WaterSurface::WAVES_WIND);
@@ -426,6 +429,7 @@ TEST(Serialization, TheWindsWavesRoundTripAsTheirFields)
     EXPECT_NE(text.find("WaveModel WAVES_WIND"), std::string::npos);
     EXPECT_NE(text.find("Speed 7.25"), std::string::npos);
     EXPECT_NE(text.find("Seed 42"), std::string::npos);
+    EXPECT_NE(text.find("Choppiness 0.75"), std::string::npos);
 }
 
 // A hand-written wind out of range is clamped with a warning, like every other field

@@ -395,6 +395,7 @@ TEST(Surface, BadWindsAreClamped)
     w.depth = std::numeric_limits<float>::infinity();
     w.spread = 7.0f;
     w.swell = std::nanf("");
+    w.choppiness = 5.0f;
     s->setWind(w);
     const WindWaves& used = s->getWind();
     EXPECT_EQ(used.speed, 5.0f);
@@ -403,7 +404,11 @@ TEST(Surface, BadWindsAreClamped)
     EXPECT_EQ(used.depth, 1.0e5f);
     EXPECT_EQ(used.spread, 1.0f);
     EXPECT_EQ(used.swell, 0.0f);
+    EXPECT_EQ(used.choppiness, 1.0f);
     w = WindWaves();
+    w.choppiness = std::nanf("");
+    s->setWind(w);
+    EXPECT_EQ(s->getWind().choppiness, 0.0f);
     w.speed = 1.0e6f;
     s->setWind(w);
     EXPECT_EQ(s->getWind().speed, 40.0f);

@@ -342,6 +342,34 @@ TEST(WaveCascades, TheChoppyNormalIsTheDisplacedSurfacesTangentsCross)
     }
 }
 
+// The bounds the shaders and the queries step by hold for the choppy surface: its slopes stay under
+// six deviations of the tiles' (the steepest lie mid-flank, where the displacement hardly squeezes
+// the water), the displacement's derivatives under six of theirs
+TEST(WaveCascades, TheChoppySurfacesSlopesAndSqueezeStayInsideTheirBounds)
+{
+    for (double wind : { 2.0, 5.0, 10.0 }) {
+        WaveCascades::Params p = lakeBreeze();
+        p.sea.windSpeed = wind;
+        p.choppiness = 1.0;
+        WaveCascades w(p);
+        w.update(5.0);
+        const double slopeBound = 6.0 * std::sqrt(w.binSlopeVariance()), stretchBound = 6.0 * std::sqrt(w.binStretchVariance());
+        std::mt19937 engine(11);
+        std::uniform_real_distribution<double> across(-70.0, 70.0);
+        double steepest = 0.0, squeezed = 0.0;
+        for (int k = 0; k < 50000; ++k) {
+            const WaveCascades::Texel t = w.sample(across(engine), across(engine));
+            steepest = std::max(steepest, t.displacedSlope().length());
+            for (int f = 0; f < 3; ++f) squeezed = std::max(squeezed, double(std::fabs(t.jacobian[f])));
+        }
+        std::cout << wind << " m/s: steepest " << steepest << " of " << slopeBound << ", most squeezed " << squeezed << " of "
+                  << stretchBound << "\n";
+        EXPECT_LT(steepest, slopeBound) << wind;
+        EXPECT_LT(squeezed, stretchBound) << wind;
+        EXPECT_GT(squeezed, 0.1 * stretchBound) << wind; // the derivatives are there
+    }
+}
+
 TEST(WaveCascades, TheSameSeedGivesTheSameSeaAndAnotherADifferentOne)
 {
     WaveCascades a(lakeBreeze()), b(lakeBreeze());

@@ -99,6 +99,7 @@ void LakeOptions::describe(osg::ApplicationUsage& u)
     u.addCommandLineOption("--pond", "Show a garden pond on the north rim, a second water above the lake (key p)");
     for (const EnumOption& e : enumOptions())
         u.addCommandLineOption(std::string(e.option) + " <" + e.names() + ">", e.help);
+    u.addCommandLineOption("--choppy <0-1>", "How far the wind's waves move the water toward their crests (0 none, 1 Tessendorf's full; default the scene's)");
     u.addCommandLineOption("--calm", "Flat water: the scene's waves off (the wind's and the sum's)");
     u.addCommandLineOption("--wind <m/s>", "The wind's waves, raised by a wind of this speed (0-40) over the lake (its fetch the lake's size); default the scene's, a 5 m/s breeze (keys w, W)");
     u.addCommandLineOption("--planes <height> <depth>", "Plane-offset lookups' planes, metres from the level (0: from the scene)");
@@ -199,6 +200,10 @@ bool LakeOptions::read(osg::ArgumentParser& args)
         std::cerr << "error: --wind takes a speed in m/s, 0 to 40" << std::endl;
         return false;
     }
+    if (args.read("--choppy", choppiness) && !(choppiness >= 0.0 && choppiness <= 1.0)) {
+        std::cerr << "error: --choppy takes a choppiness, 0 to 1" << std::endl;
+        return false;
+    }
     if (args.read("--reflective-caustics")) _setters.push_back([](WaterSettings& w) { w.setReflectiveCaustics(true); });
     if (args.read("--caustics-size", n)) _setters.push_back([n](WaterSettings& w) { w.setCausticsResolution(n); });
     if (args.read("--photons", n)) _setters.push_back([n](WaterSettings& w) { w.setPhotonGridSize(n); });
@@ -231,6 +236,11 @@ void LakeOptions::apply(osgWater::WaterNode& water) const
         w.speed = calm ? 0.0f : float(wind);
         waterSurface.setWind(w);
         if (wind >= 0.0 && waves.empty()) waterSurface.setWaveModel(osgWater::WaterSurface::WAVES_WIND);
+    }
+    if (choppiness >= 0.0) {
+        osgWater::WindWaves w = waterSurface.getWind();
+        w.choppiness = float(choppiness);
+        waterSurface.setWind(w);
     }
     if (calm) waterSurface.setWaves({});
     osgWater::WaterSurface::MeshLayout layout;

@@ -17,6 +17,7 @@ struct LakeOptions {
     double causticsTile = 0.0;     // tileable caustics: the tile's side, the waves snapped to it (0: off)
     bool calm = false;             // the scene's waves off
     double wind = -1.0;            // m/s: the wind's speed, and its waves drawn (< 0: the scene's)
+    double choppiness = -1.0;      // the wind's waves' choppiness, 0..1 (< 0: the scene's)
     std::string waves;             // the wave model (wind|sum), "" for the scene's
     std::string mesh;              // the surface's mesh layout (grid|rings), "" for the scene's
     bool headless = false;

@@ -50,7 +50,8 @@ enum TextureUnit {
     UNIT_REFLECTION_DEPTH = 9, //!< the reflection pass's depth (the water program's mirror search)
     UNIT_SUN_SHADE = 10,       //!< the sun's shade map (the scene program's procedural caustics)
     UNIT_WAVES = 11,           //!< the wind's wave cascades (every program that reads the waves)
-    UNIT_WAVE_HEIGHTS = 12,    //!< their heights alone, level 0 (the sight ray's search)
+    UNIT_WAVE_HEIGHTS = 12,    //!< their heights alone, level 0 (the sight ray's search), choppy with the displacement
+    UNIT_WAVE_JACOBIANS = 13,  //!< choppy, the displacement's derivatives
     UNIT_PASS_INPUT = 0        //!< a screen pass's input (photons to splat, highlight to blur, glow to add)
 };
 

@@ -89,9 +89,12 @@ WaterStateSets::WaterStateSets() : _programs(new ProgramLibrary)
     _water->addUniform(new osg::Uniform("osgWater_CascadeCount", 0));
     _water->addUniform(new osg::Uniform("osgWater_CascadeTexels", 1.0f));
     _water->addUniform(new osg::Uniform("osgWater_UnresolvedSlopes", 0.0f));
+    _water->addUniform(new osg::Uniform("osgWater_WaveJacobians", int(UNIT_WAVE_JACOBIANS)));
+    _water->addUniform(new osg::Uniform("osgWater_ChoppyChord", 1.0f));
     for (const char* u : { "osgWater_Waves", "osgWater_WavePhases", "osgWater_WaveCount", "osgWater_Level", "osgWater_IOR",
                            "osgWater_PhotonExtinction", "osgWater_FresnelQ", "osgWater_SunHalo", "osgWater_WaveCascades", "osgWater_WaveHeights",
-                           "osgWater_Cascades", "osgWater_CascadeCount", "osgWater_CascadeTexels", "osgWater_UnresolvedSlopes" })
+                           "osgWater_Cascades", "osgWater_CascadeCount", "osgWater_CascadeTexels", "osgWater_UnresolvedSlopes",
+                           "osgWater_WaveJacobians", "osgWater_ChoppyChord" })
         _scene->addUniform(_water->getUniform(u));
     _scene->addUniform(new osg::Uniform("osgWater_MembraneCell", 1.0f));
     _water->addUniform(new osg::Uniform("osgWater_LookupPlanes", osg::Vec2f(1.0f, 1.0f)));
@@ -167,6 +170,7 @@ void WaterStateSets::applyWind(detail::SpectralWaves* wind)
     // caustics, the photons') lies under one of the two state sets
     for (osg::StateSet* ss : { _water.get(), _scene.get() }) {
         setDefineIf(ss, "OSGWATER_WIND", wind != nullptr);
+        setDefineIf(ss, "OSGWATER_CHOPPY", wind && wind->choppy());
         if (wind) {
             ss->setTextureAttribute(UNIT_WAVES, wind->texture());
             ss->setTextureAttribute(UNIT_WAVE_HEIGHTS, wind->heightTexture());
@@ -174,7 +178,10 @@ void WaterStateSets::applyWind(detail::SpectralWaves* wind)
             ss->removeTextureAttribute(UNIT_WAVES, osg::StateAttribute::TEXTURE);
             ss->removeTextureAttribute(UNIT_WAVE_HEIGHTS, osg::StateAttribute::TEXTURE);
         }
+        if (wind && wind->choppy()) ss->setTextureAttribute(UNIT_WAVE_JACOBIANS, wind->jacobianTexture());
+        else ss->removeTextureAttribute(UNIT_WAVE_JACOBIANS, osg::StateAttribute::TEXTURE);
     }
+    _water->getUniform("osgWater_ChoppyChord")->set(wind ? float(wind->choppyChord()) : 1.0f);
     osg::Uniform* scales = _water->getUniform("osgWater_Cascades");
     for (unsigned int c = 0; c < WaveCascades::CASCADES; ++c) scales->setElement(c, wind ? wind->cascadeScale(c) : osg::Vec4f());
     _water->getUniform("osgWater_CascadeCount")->set(wind ? int(wind->cascadeCount()) : 0);

@@ -95,7 +95,7 @@ const WindField kWindFields[] = {
     { "Speed", &WindWaves::speed, nullptr, nullptr },   { "Direction", nullptr, &WindWaves::direction, nullptr },
     { "Fetch", &WindWaves::fetch, nullptr, nullptr },   { "Depth", &WindWaves::depth, nullptr, nullptr },
     { "Spread", &WindWaves::spread, nullptr, nullptr }, { "Swell", &WindWaves::swell, nullptr, nullptr },
-    { "Seed", nullptr, nullptr, &WindWaves::seed },
+    { "Choppiness", &WindWaves::choppiness, nullptr, nullptr }, { "Seed", nullptr, nullptr, &WindWaves::seed },
 };
 
 template <typename T> bool readInto(osgDB::InputStream& is, T& field, std::string& why)

@@ -55,6 +55,48 @@ private:
 }
 
 namespace {
+// each mip level the 2 x 2 average of the one above, from `level` (level 0 of an n x n tile of
+// kChannels floats) down to 1 x 1, stored after it: texel i of level L covers texels 2^L i ..
+// 2^L (i + 1) of level 0, as GL's mip levels do. Returns the 1 x 1 level.
+const float* averageLevels(float* level, unsigned int n)
+{
+    for (unsigned int side = n / 2; side >= 1; side /= 2) {
+        float* next = level + size_t(2 * side) * (2 * side) * kChannels;
+        const size_t row = size_t(2 * side) * kChannels;
+        for (unsigned int y = 0; y < side; ++y)
+            for (unsigned int x = 0; x < side; ++x)
+                for (unsigned int k = 0; k < kChannels; ++k) {
+                    const float* a = level + (2 * y) * row + (2 * x) * kChannels + k;
+                    next[(size_t(y) * side + x) * kChannels + k] = 0.25f * (a[0] + a[kChannels] + a[row] + a[row + kChannels]);
+                }
+        level = next;
+    }
+    return level;
+}
+
+// `layers` images of n x n RGBA floats with every mip level down to 1 x 1, one block per layer,
+// uploaded by CascadeUpload
+std::vector<osg::ref_ptr<osg::Image>> mipmappedLayers(unsigned int n, unsigned int layers)
+{
+    osg::Image::MipmapDataType offsets;
+    size_t texels = size_t(n) * n;
+    for (unsigned int side = n / 2; side >= 1; side /= 2) {
+        offsets.push_back(unsigned(texels * kChannels * sizeof(float)));
+        texels += size_t(side) * side;
+    }
+    std::vector<osg::ref_ptr<osg::Image>> images;
+    for (unsigned int layer = 0; layer < layers; ++layer) {
+        osg::ref_ptr<osg::Image> image = new osg::Image;
+        float* data = new float[texels * kChannels]();
+        image->setImage(int(n), int(n), 1, GL_RGBA32F_ARB, GL_RGBA, GL_FLOAT, reinterpret_cast<unsigned char*>(data),
+                        osg::Image::USE_NEW_DELETE);
+        image->setMipmapLevels(offsets);
+        image->setDataVariance(osg::Object::DYNAMIC);
+        images.push_back(image);
+    }
+    return images;
+}
+
 // a float array of `layers` periodic n x n tiles, rewritten every frame
 void setUpLayers(osg::Texture2DArray& t, unsigned int n, unsigned int layers, GLint internalFormat, GLenum sourceFormat,
                  osg::Texture::FilterMode minFilter)
@@ -73,11 +115,13 @@ void setUpLayers(osg::Texture2DArray& t, unsigned int n, unsigned int layers, GL
 }
 
 SpectralWaves::SpectralWaves(const WaveCascades::Params& params)
-    : _cascades(params), _heightBound(0.0), _slopeBound(0.0), _tilesMeanSquareSlope(0.0), _texture(new osg::Texture2DArray),
+    : _cascades(params), _heightBound(0.0), _slopeBound(0.0), _stretchBound(0.0), _tilesMeanSquareSlope(0.0),
+      _texture(new osg::Texture2DArray),
       _heights(new osg::Texture2DArray)
 {
     _heightBound = HEIGHT_SIGMAS * std::sqrt(_cascades.binVariance());
     _slopeBound = HEIGHT_SIGMAS * std::sqrt(_cascades.binSlopeVariance());
+    _stretchBound = HEIGHT_SIGMAS * std::sqrt(_cascades.binStretchVariance());
     for (unsigned int c = 0; c < _cascades.bands().size(); ++c)
         if (_cascades.holdsWaves(c)) {
             _layers.push_back(c);
@@ -86,32 +130,26 @@ SpectralWaves::SpectralWaves(const WaveCascades::Params& params)
 
     const unsigned int n = _cascades.params().size, layers = std::max(cascadeCount(), 1u);
     setUpLayers(*_texture, n, layers, GL_RGBA32F_ARB, GL_RGBA, osg::Texture::LINEAR_MIPMAP_LINEAR);
-    // every level down to 1 x 1, in one block per layer
-    osg::Image::MipmapDataType offsets;
-    size_t texels = size_t(n) * n;
-    for (unsigned int side = n / 2; side >= 1; side /= 2) {
-        offsets.push_back(unsigned(texels * kChannels * sizeof(float)));
-        texels += size_t(side) * side;
-    }
-    for (unsigned int layer = 0; layer < layers; ++layer) {
-        osg::ref_ptr<osg::Image> image = new osg::Image;
-        float* data = new float[texels * kChannels]();
-        image->setImage(int(n), int(n), 1, GL_RGBA32F_ARB, GL_RGBA, GL_FLOAT, reinterpret_cast<unsigned char*>(data),
-                        osg::Image::USE_NEW_DELETE);
-        image->setMipmapLevels(offsets);
-        image->setDataVariance(osg::Object::DYNAMIC);
-        _images.push_back(image);
-    }
+    _images = mipmappedLayers(n, layers);
     _texture->setSubloadCallback(new CascadeUpload(_images));
+    if (choppy()) {
+        _jacobians = new osg::Texture2DArray;
+        setUpLayers(*_jacobians, n, layers, GL_RGBA32F_ARB, GL_RGBA, osg::Texture::LINEAR_MIPMAP_LINEAR);
+        _jacobianImages = mipmappedLayers(n, layers);
+        _jacobians->setSubloadCallback(new CascadeUpload(_jacobianImages));
+    }
 
     // the heights alone, level 0: what the sight ray's search reads (one channel a texel costs a
-    // software rasteriser a third of four)
-    setUpLayers(*_heights, n, layers, GL_R32F, GL_RED, osg::Texture::LINEAR);
+    // software rasteriser a third of four); choppy, with the displacement it inverts
+    const GLenum heightFormat = choppy() ? GL_RGBA : GL_RED;
+    const unsigned int heightChannels = choppy() ? 4 : 1;
+    setUpLayers(*_heights, n, layers, choppy() ? GL_RGBA32F_ARB : GL_R32F, heightFormat, osg::Texture::LINEAR);
     for (unsigned int layer = 0; layer < layers; ++layer) {
         osg::ref_ptr<osg::Image> image = new osg::Image;
-        image->allocateImage(int(n), int(n), 1, GL_RED, GL_FLOAT);
-        image->setInternalTextureFormat(GL_R32F);
-        std::fill(reinterpret_cast<float*>(image->data()), reinterpret_cast<float*>(image->data()) + size_t(n) * n, 0.0f);
+        image->allocateImage(int(n), int(n), 1, heightFormat, GL_FLOAT);
+        image->setInternalTextureFormat(choppy() ? GL_RGBA32F_ARB : GL_R32F);
+        std::fill(reinterpret_cast<float*>(image->data()), reinterpret_cast<float*>(image->data()) + size_t(n) * n * heightChannels,
+                  0.0f);
         image->setDataVariance(osg::Object::DYNAMIC);
         _heights->setImage(layer, image.get());
         _heightImages.push_back(image);
@@ -155,29 +193,29 @@ void SpectralWaves::fill()
         float* level = reinterpret_cast<float*>(_images[layer]->data());
         const std::vector<WaveCascades::Texel>& texels = _cascades.texels(_layers[layer]);
         float* heights = reinterpret_cast<float*>(_heightImages[layer]->data());
+        float* jacobians = choppy() ? reinterpret_cast<float*>(_jacobianImages[layer]->data()) : nullptr;
         for (size_t i = 0; i < texels.size(); ++i) {
-            heights[i] = texels[i].displacement.z();
-            level[kChannels * i + 0] = texels[i].displacement.z();
-            level[kChannels * i + 1] = texels[i].slope.x();
-            level[kChannels * i + 2] = texels[i].slope.y();
-            level[kChannels * i + 3] = texels[i].slope.length2();
+            const WaveCascades::Texel& t = texels[i];
+            level[kChannels * i + 0] = t.displacement.z();
+            level[kChannels * i + 1] = t.slope.x();
+            level[kChannels * i + 2] = t.slope.y();
+            level[kChannels * i + 3] = t.slope.length2();
+            if (!jacobians) {
+                heights[i] = t.displacement.z();
+                continue;
+            }
+            const float height[4] = { t.displacement.z(), t.displacement.x(), t.displacement.y(), 0.0f };
+            const float jacobian[4] = { t.jacobian.x(), t.jacobian.y(), t.jacobian.z(), 0.0f };
+            std::copy(height, height + 4, heights + 4 * i);
+            std::copy(jacobian, jacobian + 4, jacobians + kChannels * i);
         }
-        // each level the 2 x 2 average of the one above: texel i of level L covers texels
-        // 2^L i .. 2^L (i + 1) of level 0, as GL's mip levels do
-        for (unsigned int side = n / 2; side >= 1; side /= 2) {
-            float* next = level + size_t(2 * side) * (2 * side) * kChannels;
-            for (unsigned int y = 0; y < side; ++y)
-                for (unsigned int x = 0; x < side; ++x)
-                    for (unsigned int k = 0; k < kChannels; ++k) {
-                        const size_t row = size_t(2 * side) * kChannels;
-                        const float* a = level + (2 * y) * row + (2 * x) * kChannels + k;
-                        next[(size_t(y) * side + x) * kChannels + k] = 0.25f * (a[0] + a[kChannels] + a[row] + a[row + kChannels]);
-                    }
-            level = next;
-        }
-        _tilesMeanSquareSlope += level[3]; // the 1 x 1 level: the tile's mean |grad h|^2
+        _tilesMeanSquareSlope += averageLevels(level, n)[3]; // the 1 x 1 level: the tile's mean |grad h|^2
         _images[layer]->dirty();
         _heightImages[layer]->dirty();
+        if (jacobians) {
+            averageLevels(jacobians, n);
+            _jacobianImages[layer]->dirty();
+        }
     }
 }
 
@@ -185,6 +223,11 @@ double SpectralWaves::meanSquareSlope() const
 {
     std::lock_guard<std::mutex> guard(_lock);
     return _tilesMeanSquareSlope + _cascades.unresolvedSlopeVariance();
+}
+
+double SpectralWaves::choppyChord() const
+{
+    return choppy() ? 1.0 / std::max(1.0 - _stretchBound, WaveCascades::MIN_STRETCH) : 1.0;
 }
 
 osg::Vec4f SpectralWaves::cascadeScale(unsigned int layer) const

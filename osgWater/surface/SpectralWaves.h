@@ -14,6 +14,9 @@ namespace osgWater { namespace detail {
 //! them from (waves.glsl under OSGWATER_WIND). The CPU and the GPU sample the same texels the same
 //! way (bilinear, texel i's centre at the FFT's sample i), so the height query is the drawn surface.
 //!
+//! With choppiness the texture holds the undisplaced surface's slopes, which the shaders (as the
+//! CPU) turn into the displaced surface's with the displacement's Jacobian (jacobianTexture).
+//!
 //! The texture is a 2D array, one layer per cascade, RGBA32F: the height, its slopes dh/dx, dh/dy
 //! and |grad h|^2, with mip levels averaged here (the averages of heights and of slopes are the
 //! height and the slopes of the averaged surface), so far water reads a filtered surface. What a
@@ -33,8 +36,21 @@ public:
     //! The texture's texels made those of time t (once a frame, the frame's time).
     void applyTime(double t);
     osg::Texture2DArray* texture() const { return _texture.get(); }
-    //! The same layers' heights alone, level 0 (R32F): what the sight ray's search reads.
+    //! The same layers' heights alone, level 0 (R32F): what the sight ray's search reads. Choppy,
+    //! (h, Dx, Dy, 0) (RGBA32F): the displacement the shaders invert as the CPU does.
     osg::Texture2DArray* heightTexture() const { return _heights.get(); }
+    //! Whether the waves move the surface sideways (choppiness, and waves to move it): the shaders
+    //! then invert the displacement (OSGWATER_CHOPPY) and read jacobianTexture.
+    bool choppy() const { return _cascades.params().choppiness > 0.0 && !_layers.empty(); }
+    //! Choppy, per layer the displacement's derivatives (dDx/dx, dDy/dy, dDx/dy, 0), mipmapped as
+    //! texture() is; else null.
+    osg::Texture2DArray* jacobianTexture() const { return _jacobians.get(); }
+    //! How much longer a chord of the choppy surface is, measured on the undisplaced one, than on
+    //! the water: 1 / (1 - stretchBound), at most 1 / WaveCascades::MIN_STRETCH; 1 without
+    //! choppiness. A crest squeezed sideways bends more sharply between a mesh's vertices.
+    double choppyChord() const;
+    //! The displacement's derivatives stay below this: HEIGHT_SIGMAS standard deviations of them.
+    double stretchBound() const { return _stretchBound; }
     //! Per layer of the texture (a cascade that holds waves), what the shader needs:
     //! (1 / tile, the height bound, the band's top k, 0).
     osg::Vec4f cascadeScale(unsigned int layer) const;
@@ -44,7 +60,9 @@ public:
     //! |h| stays below this (m): HEIGHT_SIGMAS standard deviations of the heights the bins hold
     //! (a Gaussian field's extreme over a lake's worth of texels is about 4.5 of them).
     double heightBound() const { return _heightBound; }
-    //! |grad h| stays below this: HEIGHT_SIGMAS standard deviations of the slopes.
+    //! |grad h| stays below this: HEIGHT_SIGMAS standard deviations of the slopes. The choppy
+    //! surface's slopes too: its steepest lie mid-flank, where the displacement hardly squeezes it
+    //! (tested on the realised surface).
     double slopeBound() const { return _slopeBound; }
     double maxPhaseSpeed() const { return _cascades.maxPhaseSpeed(); }
     //! The slopes' variance no cascade holds: the roughness of water whose texels are all resolved.
@@ -64,9 +82,9 @@ private:
     mutable WaveCascades _cascades;
     std::vector<unsigned int> _layers; // the cascades that hold waves, one texture layer each
     std::vector<double> _cascadeBound;
-    double _heightBound, _slopeBound, _tilesMeanSquareSlope;
-    osg::ref_ptr<osg::Texture2DArray> _texture, _heights;
-    std::vector<osg::ref_ptr<osg::Image>> _images, _heightImages;
+    double _heightBound, _slopeBound, _stretchBound, _tilesMeanSquareSlope;
+    osg::ref_ptr<osg::Texture2DArray> _texture, _heights, _jacobians;
+    std::vector<osg::ref_ptr<osg::Image>> _images, _heightImages, _jacobianImages;
 };
 
 } }

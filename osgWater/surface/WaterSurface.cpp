@@ -263,6 +263,7 @@ void WaterSurface::setWind(const WindWaves& wind)
     w.depth = detail::clampOr(who, "wind depth", w.depth, 0.0f, 1.0e5f, 0.0f);
     w.spread = detail::clampOr(who, "wind spread", w.spread, 0.0f, 1.0f, 0.0f);
     w.swell = detail::clampOr(who, "wind swell", w.swell, 0.0f, 1.0f, 0.0f);
+    w.choppiness = detail::clampOr(who, "wind choppiness", w.choppiness, 0.0f, 1.0f, 0.0f);
     const double len = std::hypot(double(w.direction.x()), double(w.direction.y()));
     if (!std::isfinite(len) || len < 1e-6) {
         OSG_WARN << who << ": wind direction (" << w.direction.x() << " " << w.direction.y()
@@ -294,6 +295,7 @@ detail::SpectralWaves* WaterSurface::getSpectralWaves() const
         p.sea.windDirection = std::atan2(double(_wind.direction.y()), double(_wind.direction.x()));
         p.sea.spread = _wind.spread;
         p.sea.swell = _wind.swell;
+        p.choppiness = _wind.choppiness;
         p.extent = _size;
         p.seed = _wind.seed;
         _spectral = new detail::SpectralWaves(p);

@@ -200,7 +200,8 @@ double WaveCascades::bandVariance(const spectrum::WindSea& sea, const std::vecto
 }
 
 WaveCascades::WaveCascades(const Params& params)
-    : _params(params), _time(0.0), _binVariance(0.0), _binSlopeVariance(0.0), _maxPhaseSpeed(0.0), _plans(new Plans)
+    : _params(params), _time(0.0), _binVariance(0.0), _binSlopeVariance(0.0), _binStretchVariance{ 0.0, 0.0 }, _maxPhaseSpeed(0.0),
+      _plans(new Plans)
 {
     unsigned int n = 16;
     while (n < std::min(params.size, 1024u)) n *= 2;
@@ -259,6 +260,11 @@ WaveCascades::WaveCascades(const Params& params)
                 cascade.bins.push_back(bin);
                 _binVariance += spectrumAt[i];
                 _binSlopeVariance += spectrumAt[i] * double(bin.k) * bin.k;
+                const double chop2 = _params.choppiness * _params.choppiness;
+                if (bin.k > 0.0f) {
+                    _binStretchVariance[0] += chop2 * spectrumAt[i] * std::pow(double(bin.kx), 4) / (double(bin.k) * bin.k);
+                    _binStretchVariance[1] += chop2 * spectrumAt[i] * std::pow(double(bin.ky), 4) / (double(bin.k) * bin.k);
+                }
                 if (bin.k > 0.0f) _maxPhaseSpeed = std::max(_maxPhaseSpeed, bin.omega / bin.k);
             }
         _cascades.push_back(std::move(cascade));

@@ -7,6 +7,7 @@
 #include <osg/Vec2f>
 #include <osg/Vec3d>
 #include <osg/Vec4f>
+#include <algorithm>
 #include <complex>
 #include <memory>
 #include <vector>
@@ -110,6 +111,9 @@ public:
     double binVariance() const { return _binVariance; }
     //! The slopes' variance the bins hold, |grad h|^2 on average: sum of k^2 S(k) dk^2.
     double binSlopeVariance() const { return _binSlopeVariance; }
+    //! The largest variance of the displacement's derivatives dDx/dx, dDy/dy the bins hold (0
+    //! without choppiness): sum of choppiness^2 k_i^4 / k^2 S(k) dk^2 for the larger of x and y.
+    double binStretchVariance() const { return std::max(_binStretchVariance[0], _binStretchVariance[1]); }
     //! The slopes' variance no bin holds: Cox and Munk's total for the wind less binSlopeVariance,
     //! never below 0; 0 without bins. The shading's roughness where every texel is resolved.
     double unresolvedSlopeVariance() const;
@@ -138,7 +142,7 @@ private:
     std::vector<CascadeBand> _bands;
     std::vector<Cascade> _cascades;
     double _time;
-    double _binVariance, _binSlopeVariance, _maxPhaseSpeed;
+    double _binVariance, _binSlopeVariance, _binStretchVariance[2], _maxPhaseSpeed;
     struct Plans;
     std::unique_ptr<Plans> _plans;
 };
