@@ -1,4 +1,5 @@
 #include "ImageError.h"
+#include "optics/Srgb.h"
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -9,12 +10,11 @@ const double kPi = 3.14159265358979323846;
 
 double radians(double degrees) { return degrees * kPi / 180.0; }
 
-// sRGB's primaries and D65 white to CIE XYZ (IEC 61966-2-1)
+// sRGB's primaries and D65 white to CIE XYZ (the kit's, as its sky uses)
 osg::Vec3d xyzFromLinearSrgb(const osg::Vec3d& c)
 {
-    return osg::Vec3d(0.4124564 * c.x() + 0.3575761 * c.y() + 0.1804375 * c.z(),
-                      0.2126729 * c.x() + 0.7151522 * c.y() + 0.0721750 * c.z(),
-                      0.0193339 * c.x() + 0.1191920 * c.y() + 0.9503041 * c.z());
+    const glm::dvec3 xyz = osgWater::optics::xyzFromLinearSrgb(glm::dvec3(c.x(), c.y(), c.z()));
+    return osg::Vec3d(xyz.x, xyz.y, xyz.z);
 }
 
 // CIELAB's companding: a cube root, and a line through the dark end

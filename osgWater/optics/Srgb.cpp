@@ -1,4 +1,5 @@
 #include "optics/Srgb.h"
+#include <glm/mat3x3.hpp>
 #include <algorithm>
 #include <cmath>
 
@@ -36,3 +37,22 @@ float optics::encodeSrgbFitted(float c)
 }
 
 glm::vec3 optics::display(const glm::vec3& linear, float exposure) { return encodeSrgb(exposure * linear); }
+
+namespace {
+// sRGB's primaries and D65 white to CIE XYZ (IEC 61966-2-1), by columns
+const glm::dmat3 kXyzFromSrgb(0.4124564, 0.2126729, 0.0193339, 0.3575761, 0.7151522, 0.1191920, 0.1804375, 0.0721750, 0.9503041);
+}
+
+glm::dvec3 optics::xyzFromLinearSrgb(const glm::dvec3& rgb) { return kXyzFromSrgb * rgb; }
+
+glm::dvec3 optics::linearSrgbFromXyz(const glm::dvec3& xyz)
+{
+    static const glm::dmat3 srgbFromXyz = glm::inverse(kXyzFromSrgb);
+    return srgbFromXyz * xyz;
+}
+
+glm::dvec3 optics::xyzFromChromaticity(double x, double y, double luminance)
+{
+    if (!(y != 0.0)) return glm::dvec3(0.0);
+    return glm::dvec3(x / y * luminance, luminance, (1.0 - x - y) / y * luminance);
+}

@@ -18,6 +18,13 @@ OSGWATER_EXPORT glm::vec3 encodeSrgb(const glm::vec3& c);
 //! What the view shows for linear light: exposed, then encoded (owDisplay).
 OSGWATER_EXPORT glm::vec3 display(const glm::vec3& linear, float exposure);
 
+//! CIE XYZ of linear sRGB (its primaries and D65 white, IEC 61966-2-1), and back: the inverse of
+//! the same matrix.
+OSGWATER_EXPORT glm::dvec3 xyzFromLinearSrgb(const glm::dvec3& rgb);
+OSGWATER_EXPORT glm::dvec3 linearSrgbFromXyz(const glm::dvec3& xyz);
+//! CIE XYZ of a chromaticity (x, y) at luminance Y; black where y is 0.
+OSGWATER_EXPORT glm::dvec3 xyzFromChromaticity(double x, double y, double luminance);
+
 //! The shader's curves line by line (owDecodeSrgb, owEncodeSrgb): the power pieces fitted, a quintic
 //! and a series in roots, each within 0.05/255 of the exact curve in display values.
 OSGWATER_EXPORT float decodeSrgbFitted(float c);
