@@ -1,5 +1,6 @@
 // osgDB wrappers: .osgt against an expected text, exact .osgt/.osgb round trips, and bad files.
 #include "serialize/LayoutVersion.h"
+#include <osgWater/Sky>
 #include <osgWater/WaterNode>
 #include <osgDB/ReadFile>
 #include <osgDB/Registry>
@@ -545,4 +546,35 @@ TEST(Serialization, EachFaultOfTheBadFileCorpusIsSaidOnItsLineAndEveryOtherField
         c.faultKept(*expected);
         EXPECT_EQ(osgtOf(*read, "bad_read.osgt"), osgtOf(*expected, "bad_expected.osgt")) << c.name;
     }
+}
+
+// A Sky among the water's children keeps its sun, turbidity and luminance scale in both formats, and
+// is read back as one triangle of its own making (its state and triangle are never stored)
+TEST(Serialization, ASkyRoundTripsAsItsSettings)
+{
+    osg::ref_ptr<WaterNode> w = new WaterNode;
+    osg::ref_ptr<Sky> sky = new Sky;
+    sky->setSunDirection(osg::Vec3(0.3f, 0.4f, 0.866f));
+    sky->setTurbidity(4.0f);
+    sky->setLuminanceScale(0.1f);
+    w->addChild(sky.get());
+    for (const char* ext : { "osgt", "osgb" }) {
+        const std::string a = tmp(std::string("sky_a.") + ext), b = tmp(std::string("sky_b.") + ext);
+        ASSERT_TRUE(osgDB::writeNodeFile(*w, a)) << ext;
+        osg::ref_ptr<WaterNode> r = readWater(a);
+        ASSERT_TRUE(r.valid()) << ext;
+        ASSERT_EQ(r->getNumChildren(), 1u) << ext;
+        const Sky* read = dynamic_cast<const Sky*>(r->getChild(0));
+        ASSERT_NE(read, nullptr) << ext;
+        EXPECT_EQ(read->getSunDirection(), sky->getSunDirection()) << ext;
+        EXPECT_EQ(read->getTurbidity(), 4.0f) << ext;
+        EXPECT_EQ(read->getLuminanceScale(), 0.1f) << ext;
+        EXPECT_EQ(read->getNumDrawables(), 1u) << ext;
+        ASSERT_TRUE(osgDB::writeNodeFile(*r, b));
+        EXPECT_EQ(slurp(a), slurp(b)) << ext;
+    }
+    const std::string text = slurp(tmp("sky_a.osgt"));
+    EXPECT_NE(text.find("osgWater::Sky"), std::string::npos);
+    EXPECT_NE(text.find("Turbidity 4"), std::string::npos);
+    EXPECT_EQ(text.find("osgWater_SkyA"), std::string::npos) << "the sky's state was stored";
 }

@@ -1,9 +1,14 @@
 // The clear sky (sky/ClearSky): Preetham's fits at the zenith against the paper's appendix worked
 // by hand, and the shape of a clear sky: blue at the zenith and whiter toward the sun and in haze,
 // brighter on the sun's side, darkest opposite it; sRGB's white at D65's chromaticity; bad
-// suns and turbidities give a finite sky. No GPU.
+// suns and turbidities give a finite sky; the node's bad settings are clamped with a warning. No GPU.
 #include "optics/Srgb.h"
 #include "sky/ClearSky.h"
+#include <osgWater/Sky>
+#include <osgWater/WaterSettings>
+#include <osg/Notify>
+#include "WarnCapture.h"
+#include <algorithm>
 #include <gtest/gtest.h>
 #include <cmath>
 #include <limits>
@@ -107,4 +112,33 @@ TEST(Sky, BadSunsAndTurbiditiesGiveAFiniteSky)
                 EXPECT_GT(c.z, 0.0) << sun.x << " " << sun.z << " " << t;
             }
         }
+}
+
+// The node's settings: a turbidity out of range or NaN and a scale below zero are clamped with a
+// warning, a sun of no direction refused with one (the sky keeps its sun); its light is the model's
+// times the scale, zero or more
+TEST(Sky, TheNodesBadSettingsAreClampedWithAWarning)
+{
+    osg::ref_ptr<Sky> s = new Sky;
+    EXPECT_EQ(s->getSunDirection(), WaterSettings::defaultSunDirection());
+    {
+        ScopedWarnCapture warnings;
+        s->setTurbidity(50.0f);
+        EXPECT_EQ(s->getTurbidity(), float(sky::MAX_TURBIDITY));
+        s->setTurbidity(std::nanf(""));
+        EXPECT_EQ(s->getTurbidity(), 2.5f);
+        s->setLuminanceScale(-1.0f);
+        EXPECT_EQ(s->getLuminanceScale(), 0.0f);
+        const osg::Vec3 before = s->getSunDirection();
+        s->setSunDirection(osg::Vec3(0.0f, 0.0f, 0.0f));
+        EXPECT_EQ(s->getSunDirection(), before);
+        EXPECT_NE(warnings.str().find("turbidity"), std::string::npos) << warnings.str();
+        EXPECT_NE(warnings.str().find("sun direction"), std::string::npos) << warnings.str();
+    }
+    s->setLuminanceScale(0.1f);
+    s->setSunDirection(osg::Vec3(0.0f, 3.0f, 4.0f));
+    EXPECT_NEAR(s->getSunDirection().length(), 1.0f, 1e-6f);
+    const glm::dvec3 model = sky::ClearSky(glm::dvec3(0.0, 0.6, 0.8), 2.5).linearSrgb(glm::dvec3(1.0, 0.0, 0.5));
+    const osg::Vec3 light = s->getRadiance(osg::Vec3(1.0f, 0.0f, 0.5f));
+    for (int i = 0; i < 3; ++i) EXPECT_NEAR(light[i], 0.1 * std::max(model[i], 0.0), 1e-6) << i;
 }

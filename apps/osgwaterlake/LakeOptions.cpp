@@ -1,5 +1,7 @@
 #include "LakeOptions.h"
+#include <osgWater/Sky>
 #include <osgWater/WaterTypes>
+#include <osg/ProxyNode>
 #include <osgDB/FileUtils>
 #include <osgDB/FileNameUtils>
 #include <iostream>
@@ -100,6 +102,7 @@ void LakeOptions::describe(osg::ApplicationUsage& u)
     for (const EnumOption& e : enumOptions())
         u.addCommandLineOption(std::string(e.option) + " <" + e.names() + ">", e.help);
     u.addCommandLineOption("--choppy <0-1>", "How far the wind's waves move the water toward their crests (0 none, 1 Tessendorf's full; default the scene's)");
+    u.addCommandLineOption("--sky", "Preetham's clear sky (osgWater::Sky) in place of the scene's sky dome, lit by the water's sun, reflected by the water");
     u.addCommandLineOption("--calm", "Flat water: the scene's waves off (the wind's and the sum's)");
     u.addCommandLineOption("--wind <m/s>", "The wind's waves, raised by a wind of this speed (0-40) over the lake (its fetch the lake's size); default the scene's, a 5 m/s breeze (keys w, W)");
     u.addCommandLineOption("--planes <height> <depth>", "Plane-offset lookups' planes, metres from the level (0: from the scene)");
@@ -196,6 +199,7 @@ bool LakeOptions::read(osg::ArgumentParser& args)
     if (args.read("--supersample")) _setters.push_back([](WaterSettings& w) { w.setCausticsSupersampling(true); });
     args.read("--caustics-tile", causticsTile);
     if (args.read("--calm")) calm = true;
+    if (args.read("--sky")) sky = true;
     if (args.read("--wind", wind) && !(wind >= 0.0 && wind <= 40.0)) {
         std::cerr << "error: --wind takes a speed in m/s, 0 to 40" << std::endl;
         return false;
@@ -243,6 +247,15 @@ void LakeOptions::apply(osgWater::WaterNode& water) const
         waterSurface.setWind(w);
     }
     if (calm) waterSurface.setWaves({});
+    if (sky) {
+        // the clear sky in place of the scene's own dome (data/lake/sky.obj)
+        for (unsigned int i = 0; i < water.getNumChildren(); ++i)
+            if (const osg::ProxyNode* proxy = dynamic_cast<const osg::ProxyNode*>(water.getChild(i)))
+                if (proxy->getNumFileNames() && osgDB::getSimpleFileName(proxy->getFileName(0)) == "sky.obj") water.getChild(i)->setNodeMask(0);
+        osg::ref_ptr<osgWater::Sky> clearSky = new osgWater::Sky;
+        clearSky->setSunDirection(s.getSunDirection());
+        water.addChild(clearSky.get());
+    }
     osgWater::WaterSurface::MeshLayout layout;
     if (osgWater::WaterSurface::meshLayoutFromName(mesh, layout)) water.getSurface()->setMeshLayout(layout);
     if (causticsTile > 0.0) {

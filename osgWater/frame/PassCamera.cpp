@@ -100,6 +100,13 @@ bool osgWater::isWaterPass(const osg::Camera* camera)
     return camera && camera->getUserValue(kWaterPassKey, pass);
 }
 
+bool osgWater::drawsSceneColours(const osg::Camera* camera)
+{
+    int pass;
+    if (!camera || !camera->getUserValue(kWaterPassKey, pass)) return true;
+    return pass == PASS_ENVIRONMENT || pass == PASS_REFLECTION || pass == PASS_REFRACTION;
+}
+
 void PassCamera::setKeepPlane(const osg::Plane& localPlane)
 {
     _keepPlane = localPlane;

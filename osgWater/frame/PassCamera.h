@@ -31,6 +31,9 @@ OSGWATER_EXPORT void setUpPassBin(osg::StateSet* ss, PassId pass);
 //! True for a camera set up by setUpPassTarget: a pass of some WaterNode. A WaterNode culled
 //! by one is inside another water's pass and draws itself as a guest (no passes of its own).
 OSGWATER_EXPORT bool isWaterPass(const osg::Camera* camera);
+//! Whether `camera` draws the scene's colours: a view (not a water pass), or the environment,
+//! reflection or refraction pass; not the sun's depth, the photons, nor the glow's occluders.
+OSGWATER_EXPORT bool drawsSceneColours(const osg::Camera* camera);
 
 //! Releases a pass camera's GL objects on `state` (all contexts when null): its render stage (FBO,
 //! renderbuffers), its StateSet and the textures it renders into.

@@ -47,6 +47,9 @@ public:
     //! The same light in linear sRGB (D65 white), scaled so that Y is kcd/m^2.
     glm::dvec3 linearSrgb(const glm::dvec3& direction) const;
 
+    //! The zenith's (x, y, Y) over Perez's values there: what Perez's value along a direction is
+    //! multiplied by (the shaders' osgWater_SkyZenith).
+    glm::dvec3 zenithScale() const { return _zenith / _atZenith; }
     double turbidity() const { return _turbidity; }
     const glm::dvec3& towardSun() const { return _sun; }
 
