@@ -102,7 +102,8 @@ void LakeOptions::describe(osg::ApplicationUsage& u)
     for (const EnumOption& e : enumOptions())
         u.addCommandLineOption(std::string(e.option) + " <" + e.names() + ">", e.help);
     u.addCommandLineOption("--choppy <0-1>", "How far the wind's waves move the water toward their crests (0 none, 1 Tessendorf's full; default the scene's)");
-    u.addCommandLineOption("--sky", "Preetham's clear sky (osgWater::Sky) in place of the scene's sky dome, lit by the water's sun, reflected by the water");
+    u.addCommandLineOption("--sky", "Preetham's clear sky (osgWater::Sky) in place of the scene's sky dome, lit by the water's sun, reflected by the water (the default)");
+    u.addCommandLineOption("--dome", "The scene's own sky dome (data/lake/sky.obj) instead of the clear sky");
     u.addCommandLineOption("--calm", "Flat water: the scene's waves off (the wind's and the sum's)");
     u.addCommandLineOption("--wind <m/s>", "The wind's waves, raised by a wind of this speed (0-40) over the lake (its fetch the lake's size); default the scene's, a 5 m/s breeze (keys w, W)");
     u.addCommandLineOption("--planes <height> <depth>", "Plane-offset lookups' planes, metres from the level (0: from the scene)");
@@ -200,6 +201,7 @@ bool LakeOptions::read(osg::ArgumentParser& args)
     args.read("--caustics-tile", causticsTile);
     if (args.read("--calm")) calm = true;
     if (args.read("--sky")) sky = true;
+    if (args.read("--dome")) sky = false;
     if (args.read("--wind", wind) && !(wind >= 0.0 && wind <= 40.0)) {
         std::cerr << "error: --wind takes a speed in m/s, 0 to 40" << std::endl;
         return false;

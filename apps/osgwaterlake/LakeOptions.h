@@ -16,7 +16,7 @@ struct LakeOptions {
     double time = 10.0;            // simulation time of the first frame
     double causticsTile = 0.0;     // tileable caustics: the tile's side, the waves snapped to it (0: off)
     bool calm = false;             // the scene's waves off
-    bool sky = false;              // Preetham's clear sky behind the scene (osgWater::Sky), from the water's sun
+    bool sky = true;               // Preetham's clear sky (osgWater::Sky) in place of the scene's dome, from the water's sun
     double wind = -1.0;            // m/s: the wind's speed, and its waves drawn (< 0: the scene's)
     double choppiness = -1.0;      // the wind's waves' choppiness, 0..1 (< 0: the scene's)
     std::string waves;             // the wave model (wind|sum), "" for the scene's
