@@ -15,8 +15,8 @@ pair osgwaterlake-caustics.png
 demo --no-hud --size 512 384 --water-type thesis --underwater --k 0.15 --screenshot "$tmp/left.png"
 demo --no-hud --size 512 384 --eye 0 -20 -3 --center 0 -13 2 --k 0.15 --screenshot "$tmp/right.png"
 pair osgwaterlake-underwater.png
-demo --no-hud --size 512 384 --sun 0 0.97 0.2 --water-type thesis --no-glow --screenshot "$tmp/left.png"
-demo --no-hud --size 512 384 --sun 0 0.97 0.2 --water-type thesis --screenshot "$tmp/right.png"
+demo --no-hud --size 512 384 --sun 0 0.97 0.2 --water-type thesis --dome --no-glow --screenshot "$tmp/left.png"
+demo --no-hud --size 512 384 --sun 0 0.97 0.2 --water-type thesis --dome --screenshot "$tmp/right.png"
 pair osgwaterlake-glow.png
 demo --no-hud --size 800 500 --pond --eye 12 18 9 --center 10 44 2.5 --screenshot docs/osgwaterlake-pond.png
 echo "pictures: docs/osgwaterlake*.png"
