@@ -1,6 +1,7 @@
 // Captures OSG's notifications for the lifetime of a scope, so tests can check that clamping says so.
 #pragma once
 #include <osg/Notify>
+#include <osg/ref_ptr>
 #include <sstream>
 #include <string>
 

@@ -2,6 +2,7 @@
 // replayed through the fuzz target's own checks in the ordinary build.
 #include "fuzz/FuzzRead.h"
 #include <gtest/gtest.h>
+#include <osg/Notify>
 #include <osgDB/FileUtils>
 #include <fstream>
 #include <sstream>
@@ -16,6 +17,19 @@ std::vector<std::string> inputs(const std::string& dir)
     return files;
 }
 
+// The fuzz target silences OSG for the whole process (its init); a test of it puts OSG's notify
+// level and handler back as they were, or every later test in the binary hears no warnings
+struct FuzzTargetInScope {
+    osg::NotifySeverity level = osg::getNotifyLevel();
+    osg::ref_ptr<osg::NotifyHandler> handler = osg::getNotifyHandler();
+    FuzzTargetInScope() { osgwater_fuzz::init(); }
+    ~FuzzTargetInScope()
+    {
+        osg::setNotifyLevel(level);
+        osg::setNotifyHandler(handler.get());
+    }
+};
+
 std::string slurp(const std::string& path)
 {
     std::ifstream in(path.c_str(), std::ios::binary);
@@ -28,7 +42,7 @@ std::string slurp(const std::string& path)
 
 TEST(FuzzRegressions, EveryKeptInputReadsWithoutBreakingAnInvariant)
 {
-    osgwater_fuzz::init();
+    const FuzzTargetInScope target;
     const std::vector<std::string> files = inputs(OSGWATER_FUZZ_REGRESSIONS);
     ASSERT_FALSE(files.empty()) << "no inputs in " << OSGWATER_FUZZ_REGRESSIONS;
     for (const std::string& f : files) {
@@ -40,7 +54,7 @@ TEST(FuzzRegressions, EveryKeptInputReadsWithoutBreakingAnInvariant)
 TEST(FuzzRegressions, TheSeedsReadAsWaterAndRoundTrip)
 {
     // the checks must see WaterNodes: a seed that stopped reading would make the fuzzer blind
-    osgwater_fuzz::init();
+    const FuzzTargetInScope target;
     for (const std::string& f : inputs(OSGWATER_FUZZ_SEEDS)) {
         const std::string bytes = slurp(f);
         EXPECT_TRUE(osgwater_fuzz::isWater(reinterpret_cast<const uint8_t*>(bytes.data()), bytes.size())) << f;
