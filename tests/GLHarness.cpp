@@ -72,6 +72,21 @@ osg::Vec2d Harness::pixelOf(const osg::Vec3d& p) const
     return osg::Vec2d((c.x() / c.w() * 0.5 + 0.5) * _w, (c.y() / c.w() * 0.5 + 0.5) * _h);
 }
 
+osg::Vec3d Harness::eye() const
+{
+    return osg::Matrixd::inverse(_viewer->getCamera()->getViewMatrix()).getTrans();
+}
+
+osg::Vec3d Harness::pixelRay(int x, int y) const
+{
+    const osg::Camera* cam = _viewer->getCamera();
+    const osg::Matrixd toScene = osg::Matrixd::inverse(cam->getViewMatrix() * cam->getProjectionMatrix() *
+                                                       cam->getViewport()->computeWindowMatrix());
+    osg::Vec3d d = osg::Vec3d(x + 0.5, y + 0.5, 1.0) * toScene - eye();
+    d.normalize();
+    return d;
+}
+
 osg::ref_ptr<osg::Image> readTexture(osg::GraphicsContext* gc, osg::Texture2D* texture, int level)
 {
     gc->makeCurrent();

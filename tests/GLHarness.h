@@ -57,6 +57,10 @@ public:
     void frame(double simulationTime);
     //! Pixel (column, row from the bottom) where a local point lands in the main view.
     osg::Vec2d pixelOf(const osg::Vec3d& p) const;
+    //! The view's eye, and the unit ray from it through pixel (x, y)'s centre (column, row from the
+    //! bottom), in the scene's frame.
+    osg::Vec3d eye() const;
+    osg::Vec3d pixelRay(int x, int y) const;
     //! The main camera's float colour target, read back after the last frame.
     osg::ref_ptr<osg::Image> readColor() { return readTexture(_target.get()); }
     //! Any texture on this context as float RGBA (depth textures: depth in every channel), at a

@@ -12,19 +12,6 @@
 using namespace testing_gl;
 using namespace osgWater;
 
-namespace {
-// the ray through pixel (x, y)'s centre, from the eye, in the scene's frame
-osg::Vec3d pixelRay(Harness& h, int x, int y)
-{
-    const osg::Camera* cam = h.camera();
-    const osg::Matrixd toWorld = osg::Matrixd::inverse(cam->getViewMatrix() * cam->getProjectionMatrix() *
-                                                       cam->getViewport()->computeWindowMatrix());
-    const osg::Vec3d eye = osg::Matrixd::inverse(cam->getViewMatrix()).getTrans();
-    osg::Vec3d d = osg::Vec3d(x + 0.5, y + 0.5, 1.0) * toWorld - eye;
-    d.normalize();
-    return d;
-}
-}
 
 // Looking up 30 degrees, away from a sun 32 degrees up behind the eye's right shoulder (its
 // circumsolar sky would saturate the view): every pixel is the mirror's
@@ -49,7 +36,7 @@ TEST(RenderSky, TheViewShowsTheClearSkyAlongEachPixelsRay)
         float lo = 1.0f, hi = 0.0f;
         for (int y = 0; y < img->t(); ++y)
             for (int x = 0; x < img->s(); ++x) {
-                const osg::Vec3 light = sky->getRadiance(pixelRay(h, x, y));
+                const osg::Vec3 light = sky->getRadiance(h.pixelRay(x, y));
                 const glm::vec3 expected = optics::display(glm::vec3(light.x(), light.y(), light.z()), exposure);
                 const float* c = pixel(img.get(), x, y);
                 for (int k = 0; k < 3; ++k) worst = std::max(worst, double(std::fabs(c[k] - expected[k])));

@@ -92,16 +92,12 @@ namespace {
 double coverageMismatch(Harness& h, const WaterNode& water, double t, size_t& waterPixels)
 {
     osg::ref_ptr<osg::Image> img = h.readColor();
-    const osg::Camera* cam = h.camera();
-    const osg::Matrixd toLocal = osg::Matrixd::inverse(cam->getViewMatrix() * cam->getProjectionMatrix() *
-                                                       cam->getViewport()->computeWindowMatrix());
-    const osg::Vec3d eye = osg::Matrixd::inverse(cam->getViewMatrix()).getTrans();
+    const osg::Vec3d eye = h.eye();
     size_t mismatch = 0;
     waterPixels = 0;
     for (int y = 0; y < img->t(); ++y)
         for (int x = 0; x < img->s(); ++x) {
-            osg::Vec3d dir = osg::Vec3d(x + 0.5, y + 0.5, 1.0) * toLocal - eye;
-            dir.normalize();
+            const osg::Vec3d dir = h.pixelRay(x, y);
             double ratio;
             osg::Vec3d point, normal;
             const bool exact = water.getSurface()->intersect(eye, eye + dir * 400.0, t, ratio, point, normal);
@@ -145,17 +141,13 @@ namespace {
 std::vector<double> shadedPointErrors(Harness& h, const WaterNode& water, double t)
 {
     osg::ref_ptr<osg::Image> img = h.readColor();
-    const osg::Camera* cam = h.camera();
-    const osg::Matrixd toLocal = osg::Matrixd::inverse(cam->getViewMatrix() * cam->getProjectionMatrix() *
-                                                       cam->getViewport()->computeWindowMatrix());
-    const osg::Vec3d eye = osg::Matrixd::inverse(cam->getViewMatrix()).getTrans();
+    const osg::Vec3d eye = h.eye();
     std::vector<double> e;
     for (int y = 0; y < img->t(); ++y)
         for (int x = 0; x < img->s(); ++x) {
             const float* p = pixel(img.get(), x, y);
             if (p[3] != 2.0f) continue;
-            osg::Vec3d dir = osg::Vec3d(x + 0.5, y + 0.5, 1.0) * toLocal - eye;
-            dir.normalize();
+            const osg::Vec3d dir = h.pixelRay(x, y);
             double ratio;
             osg::Vec3d exact, normal;
             if (!water.getSurface()->intersect(eye, eye + dir * 400.0, t, ratio, exact, normal)) continue;
@@ -297,14 +289,11 @@ TEST(RenderSurface, ThePixelsSlopesAndRoughnessMakeCoxMunksTotalNearAndFar)
         h.frame(3.0);
         osg::ref_ptr<osg::Image> img = h.readColor();
         ASSERT_TRUE(img.valid());
-        const osg::Camera* cam = h.camera();
-        const osg::Matrixd toLocal = osg::Matrixd::inverse(cam->getViewMatrix() * cam->getProjectionMatrix() *
-                                                           cam->getViewport()->computeWindowMatrix());
         for (int y = 0; y < img->t(); ++y)
             for (int x = 0; x < img->s(); ++x) {
                 const float* p = pixel(img.get(), x, y);
                 if (p[3] != 2.0f) continue;
-                const osg::Vec3d dir = osg::Vec3d(x + 0.5, y + 0.5, 1.0) * toLocal - eye;
+                const osg::Vec3d dir = h.pixelRay(x, y);
                 if (!(dir.z() < 0.0)) continue;
                 const osg::Vec3d level = eye + dir * (-eye.z() / dir.z()); // where the ray meets the level
                 const double d = osg::Vec2d(level.x() - eye.x(), level.y() - eye.y()).length();

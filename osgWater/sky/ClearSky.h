@@ -50,6 +50,8 @@ public:
     //! The zenith's (x, y, Y) over Perez's values there: what Perez's value along a direction is
     //! multiplied by (the shaders' osgWater_SkyZenith).
     glm::dvec3 zenithScale() const { return _zenith / _atZenith; }
+    //! Perez's coefficients for its turbidity (the shaders' osgWater_SkyA .. E).
+    const PerezSet& perezSet() const { return _perez; }
     double turbidity() const { return _turbidity; }
     const glm::dvec3& towardSun() const { return _sun; }
 

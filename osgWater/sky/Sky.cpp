@@ -93,7 +93,7 @@ void Sky::setLuminanceScale(float scale)
 void Sky::applyModel()
 {
     const sky::ClearSky model(glm::dvec3(_sun.x(), _sun.y(), _sun.z()), _turbidity);
-    const sky::PerezSet p = sky::perezCoefficients(model.turbidity());
+    const sky::PerezSet& p = model.perezSet();
     osg::StateSet* ss = state();
     // each coefficient for (x, y, Y), as the zenith's values are ordered
     auto set = [ss](const char* name, double x, double y, double luminance) {

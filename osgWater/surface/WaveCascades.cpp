@@ -346,7 +346,8 @@ WaveCascades::Texel WaveCascades::sample(double x, double y) const
         sum.displacement += (a.displacement * (1 - wx) + b.displacement * wx) * (1 - wy)
                             + (d.displacement * (1 - wx) + e.displacement * wx) * wy;
         sum.slope += (a.slope * (1 - wx) + b.slope * wx) * (1 - wy) + (d.slope * (1 - wx) + e.slope * wx) * wy;
-        sum.jacobian += (a.jacobian * (1 - wx) + b.jacobian * wx) * (1 - wy) + (d.jacobian * (1 - wx) + e.jacobian * wx) * wy;
+        if (_params.choppiness != 0.0) // else zero: the height query's hot path skips it
+            sum.jacobian += (a.jacobian * (1 - wx) + b.jacobian * wx) * (1 - wy) + (d.jacobian * (1 - wx) + e.jacobian * wx) * wy;
     }
     return sum;
 }
