@@ -6,6 +6,13 @@
 // each within 0.05/255 of the curve once in display values; pow costs a software rasteriser several
 // times more, on every fragment of every scene pass. Mirrored in osgWater/optics/Srgb.cpp
 // (decodeSrgbFitted, encodeSrgbFitted), which a test holds to the exact curve.
+// OSGWATER_TONE (WaterSettings::ToneCurve, one of contract.glsl's OSGWATER_TONE_*): the curve the
+// exposed light goes through before the encoding; a program outside the kit's states has none and clips.
+#pragma import_defines(OSGWATER_TONE)
+#pragma include "contract.glsl"
+#ifndef OSGWATER_TONE
+#define OSGWATER_TONE OSGWATER_TONE_CLIP
+#endif
 uniform float osgWater_Exposure; // linear light is multiplied by it before the encoding
 
 vec3 owDecodeSrgb(vec3 c)
@@ -25,6 +32,17 @@ vec3 owEncodeSrgb(vec3 c)
     return mix(c * 12.92, p, step(vec3(0.0031308), c));
 }
 
-//! Linear light as the view shows it: exposed, then encoded.
-vec3 owDisplay(vec3 linear) { return owEncodeSrgb(osgWater_Exposure * linear); }
+// Exposed light as a display's 0..1 (WaterSettings::ToneCurve; mirrored by optics::toneCurve)
+vec3 owToneCurve(vec3 x)
+{
+#if OSGWATER_TONE == OSGWATER_TONE_ACES
+    x = max(x, 0.0);
+    return x * (2.51 * x + 0.03) / (x * (2.43 * x + 0.59) + 0.14); // the encoding clamps above 1
+#else
+    return x;
+#endif
+}
+
+//! Linear light as the view shows it: exposed, through the tone curve, then encoded.
+vec3 owDisplay(vec3 linear) { return owEncodeSrgb(owToneCurve(osgWater_Exposure * linear)); }
 

@@ -197,6 +197,7 @@ TEST(BadValues, EnumsThatNameNoModelFallBackToTheDefaultWithOneWarning)
         { "waterModel", [](WaterSettings& s, int v) { s.setWaterModel(WaterSettings::WaterModel(v)); return int(s.getWaterModel()); }, 1, 0 },
         { "causticsGather", [](WaterSettings& s, int v) { s.setCausticsGather(WaterSettings::CausticsGather(v)); return int(s.getCausticsGather()); }, 3, 0 },
         { "causticsMethod", [](WaterSettings& s, int v) { s.setCausticsMethod(WaterSettings::CausticsMethod(v)); return int(s.getCausticsMethod()); }, 3, 0 },
+        { "toneCurve", [](WaterSettings& s, int v) { s.setToneCurve(WaterSettings::ToneCurve(v)); return int(s.getToneCurve()); }, 1, 0 },
     };
     for (const EnumSetting& e : enums)
         for (int v : { INT_MIN, -1, 0, 1, e.last, e.last + 1, 1000, INT_MAX }) {

@@ -176,6 +176,7 @@ TEST(LakeDemo, ItsHelpListsEveryNameTheKitKnowsAndTheQualityPresetComesFirst)
         { "--gather", split(S::causticsGatherNames(), "|") },
         { "--caustics", split(S::causticsMethodNames(), "|") },
         { "--underwater-model", split(S::underwaterModelNames(), "|") },
+        { "--tone", split(S::toneCurveNames(), "|") },
         { "--waves", split(F::waveModelNames(), "|") },
         { "--mesh", split(F::meshLayoutNames(), "|") },
         { "--water-type", split(osgWater::waterTypeNames(), ", ") },

@@ -142,6 +142,34 @@ TEST(Optics, SrgbCurveMatchesTheStandardAndRoundTripsEveryLevel)
     EXPECT_NEAR(shown.z, 1.0f, 1e-6f); // exposed past white: white
 }
 
+// ACES's filmic curve as Narkowicz fitted it, at values worked by hand from the formula x (2.51 x +
+// 0.03) / (x (2.43 x + 0.59) + 0.14): 0 stays black, light 1 shows as 2.54 / 3.16, mid-grey 0.18 as
+// 0.086724 / 0.324932, white is reached at the root of 0.08 x^2 - 0.56 x - 0.14 (x = 7.2418); it
+// rises all the way (strictly while single precision can tell); no curve leaves a NaN; the clip curve is none
+TEST(Optics, TheAcesToneCurveIsNarkowiczsFit)
+{
+    using C = osgWater::WaterSettings;
+    EXPECT_EQ(toneCurve(0.0f, C::TONE_ACES), 0.0f);
+    EXPECT_NEAR(toneCurve(1.0f, C::TONE_ACES), 2.54f / 3.16f, 1e-6f);
+    EXPECT_NEAR(toneCurve(0.18f, C::TONE_ACES), 0.086724f / 0.324932f, 1e-6f);
+    EXPECT_NEAR(toneCurve(7.2418f, C::TONE_ACES), 1.0f, 1e-4f);
+    float last = 0.0f;
+    for (int i = 1; i <= 10000; ++i) {
+        const float y = toneCurve(i * 0.01f, C::TONE_ACES);
+        if (i <= 1000) ASSERT_GT(y, last) << i * 0.01f; // past 10 its steps fall under a float's spacing
+        else ASSERT_GE(y, last) << i * 0.01f;
+        last = y;
+    }
+    EXPECT_LT(last, 2.51f / 2.43f);
+    EXPECT_EQ(toneCurve(NAN, C::TONE_ACES), 0.0f);
+    EXPECT_EQ(toneCurve(-1.0f, C::TONE_ACES), 0.0f);
+    EXPECT_EQ(toneCurve(0.37f, C::TONE_CLIP), 0.37f);
+    const glm::vec3 shown = display(glm::vec3(0.5f, 0.09f, 4.0f), 2.0f, C::TONE_ACES);
+    EXPECT_NEAR(shown.x, encodeSrgb(2.54f / 3.16f), 1e-6f);
+    EXPECT_NEAR(shown.y, encodeSrgb(0.086724f / 0.324932f), 1e-6f);
+    EXPECT_NEAR(shown.z, 1.0f, 1e-6f); // 8, past the curve's white
+}
+
 // The shader's fitted curves against the exact one, in display values: within 0.05/255 at 20 001
 // points of each side, and every 8-bit level back to itself through both
 TEST(Optics, TheShadersFittedSrgbCurvesStayWithinAFiftiethOfALevel)

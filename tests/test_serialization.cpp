@@ -132,6 +132,7 @@ TEST(Serialization, ExpectedTextReadsBackIntoTheSameNode)
     EXPECT_FLOAT_EQ(s->getGlowRadius(), 5.0f);
     EXPECT_FLOAT_EQ(s->getGlowResolution(), 0.25f); // absent: default
     EXPECT_FLOAT_EQ(s->getExposure(), 1.5f);
+    EXPECT_EQ(s->getToneCurve(), WaterSettings::TONE_CLIP);
     const WaterSurface* f = w->getSurface();
     EXPECT_DOUBLE_EQ(f->getLevel(), 1.5);
     EXPECT_FLOAT_EQ(f->getSize(), 60.0f);
@@ -149,12 +150,15 @@ TEST(Serialization, OsgtAndOsgbRoundTripExactly)
 {
     for (const char* ext : { "osgt", "osgb" }) {
         const std::string a = tmp(std::string("rt_a.") + ext), b = tmp(std::string("rt_b.") + ext);
-        ASSERT_TRUE(osgDB::writeNodeFile(*pond(), a));
+        osg::ref_ptr<WaterNode> written = pond();
+        written->getSettings()->setToneCurve(WaterSettings::TONE_ACES); // not the default: it must be read
+        ASSERT_TRUE(osgDB::writeNodeFile(*written, a));
         osg::ref_ptr<WaterNode> w = readWater(a);
         ASSERT_TRUE(w.valid()) << ext;
         ASSERT_TRUE(osgDB::writeNodeFile(*w, b));
         EXPECT_EQ(slurp(a), slurp(b)) << ext;
         EXPECT_EQ(w->getSettings()->getFresnelModel(), WaterSettings::FRESNEL_EXACT) << ext;
+        EXPECT_EQ(w->getSettings()->getToneCurve(), WaterSettings::TONE_ACES) << ext;
         EXPECT_EQ(w->getSurface()->getWaves().size(), 1u) << ext;
     }
 }

@@ -77,6 +77,8 @@ TEST(ShaderContract, EveryNamedValueIsItsEnumsValue)
         { "OSGWATER_FRESNEL_RECIPROCAL", WaterSettings::FRESNEL_RECIPROCAL },
         { "OSGWATER_UNDERWATER_PHYSICAL", WaterSettings::UNDERWATER_PHYSICAL },
         { "OSGWATER_UNDERWATER_THESIS", WaterSettings::UNDERWATER_THESIS },
+        { "OSGWATER_TONE_CLIP", WaterSettings::TONE_CLIP },
+        { "OSGWATER_TONE_ACES", WaterSettings::TONE_ACES },
         { "OSGWATER_DEBUG_NONE", DEBUG_NONE },
         { "OSGWATER_DEBUG_BOTTOM_HIT", DEBUG_BOTTOM_HIT },
         { "OSGWATER_DEBUG_REFLECTION_LOOKUP", DEBUG_REFLECTION_LOOKUP },
@@ -101,8 +103,8 @@ TEST(ShaderContract, ShadersCompareSwitchesWithNamedValuesOnly)
     const std::vector<std::string> files = shaderFiles();
     ASSERT_GE(files.size(), 20u) << "the shader folder " << OSGWATER_SHADER_DIR;
     const std::map<std::string, int> defines = contractDefines();
-    const std::regex literal(R"(OSGWATER_(REFRACTION|REFLECTION|FRESNEL|UNDERWATER|DEBUG)\s*[=!]=\s*[0-9])");
-    const std::regex named(R"(OSGWATER_(REFRACTION|REFLECTION|FRESNEL|UNDERWATER|DEBUG)\s*[=!]=\s*(OSGWATER_\w+))");
+    const std::regex literal(R"(OSGWATER_(REFRACTION|REFLECTION|FRESNEL|UNDERWATER|TONE|DEBUG)\s*[=!]=\s*[0-9])");
+    const std::regex named(R"(OSGWATER_(REFRACTION|REFLECTION|FRESNEL|UNDERWATER|TONE|DEBUG)\s*[=!]=\s*(OSGWATER_\w+))");
     int comparisons = 0;
     for (const std::string& f : files) {
         const std::string text = readFile(f);

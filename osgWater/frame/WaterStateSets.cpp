@@ -158,6 +158,10 @@ void WaterStateSets::applySettings(const WaterSettings& s, const WaterSurface& s
     w->setDefine("OSGWATER_FRESNEL", std::to_string(int(s.getFresnelModel())));
     _scene->setDefine("OSGWATER_FRESNEL", std::to_string(int(s.getFresnelModel()))); // procedural caustics per pixel
     w->setDefine("OSGWATER_UNDERWATER", std::to_string(int(s.getUnderwaterModel())));
+    // the tone curve, wherever the view's colours are encoded (owDisplay): the scene, and the sky
+    // under it, the water, the backdrop
+    for (osg::StateSet* ss : { _scene.get(), w })
+        ss->setDefine("OSGWATER_TONE", std::to_string(int(s.getToneCurve())));
     // OSGWATER_NO_REFLECTION / OSGWATER_NO_REFRACTION follow what ran (ViewPasses), not the
     // settings; OSGWATER_ENVIRONMENT the map in use (setEnvironmentMap())
     if (debug == DEBUG_NONE) w->removeDefine("OSGWATER_DEBUG");

@@ -36,7 +36,18 @@ float optics::encodeSrgbFitted(float c)
     return 0.65468427f * s1 + 0.68885027f * s2 - 0.31928944f * s3 - 0.020599216f * c - 0.0037160980f;
 }
 
-glm::vec3 optics::display(const glm::vec3& linear, float exposure) { return encodeSrgb(exposure * linear); }
+float optics::toneCurve(float x, WaterSettings::ToneCurve curve)
+{
+    if (curve != WaterSettings::TONE_ACES) return x;
+    x = x > 0.0f ? x : 0.0f; // NaN too: black
+    return x * (2.51f * x + 0.03f) / (x * (2.43f * x + 0.59f) + 0.14f);
+}
+
+glm::vec3 optics::display(const glm::vec3& linear, float exposure, WaterSettings::ToneCurve curve)
+{
+    const glm::vec3 x = exposure * linear;
+    return encodeSrgb(glm::vec3(toneCurve(x.x, curve), toneCurve(x.y, curve), toneCurve(x.z, curve)));
+}
 
 namespace {
 // sRGB's primaries and D65 white to CIE XYZ (IEC 61966-2-1), by columns

@@ -3,6 +3,7 @@
 #define OSGWATER_SRGB 1
 
 #include <osgWater/Export>
+#include <osgWater/WaterSettings>
 #include <glm/glm.hpp>
 
 //! CPU mirror of shaders/srgb.glsl: the sRGB curve (IEC 61966-2-1) between display values, as files
@@ -15,8 +16,11 @@ OSGWATER_EXPORT glm::vec3 decodeSrgb(const glm::vec3& c);
 //! Linear light (clamped to [0, 1]) as a display value.
 OSGWATER_EXPORT float encodeSrgb(float c);
 OSGWATER_EXPORT glm::vec3 encodeSrgb(const glm::vec3& c);
-//! What the view shows for linear light: exposed, then encoded (owDisplay).
-OSGWATER_EXPORT glm::vec3 display(const glm::vec3& linear, float exposure);
+//! Exposed light through the tone curve (owToneCurve): what the encoding then clamps to [0, 1].
+OSGWATER_EXPORT float toneCurve(float exposed, WaterSettings::ToneCurve curve);
+//! What the view shows for linear light: exposed, through the tone curve, then encoded (owDisplay).
+OSGWATER_EXPORT glm::vec3 display(const glm::vec3& linear, float exposure,
+                                  WaterSettings::ToneCurve curve = WaterSettings::TONE_CLIP);
 
 //! CIE XYZ of linear sRGB (its primaries and D65 white, IEC 61966-2-1), and back: the inverse of
 //! the same matrix.

@@ -135,6 +135,10 @@ REGISTER_OBJECT_WRAPPER(osgWater_WaterSettings, new osgWater::WaterSettings, osg
     ADD_VEC3F_FIELD(SunColor, osg::Vec3f(1.0f, 1.0f, 0.9f));
     ADD_VEC3F_FIELD(AmbientColor, osg::Vec3f(0.35f, 0.38f, 0.45f));
     ADD_FLOAT_FIELD(Exposure, 1.0f);
+    BEGIN_ENUM_FIELD(ToneCurve, TONE_CLIP);
+        ADD_ENUM_VALUE(TONE_CLIP);
+        ADD_ENUM_VALUE(TONE_ACES);
+    END_ENUM_FIELD();
     ADD_OTHER_FIELDS_SERIALIZER("osgWater::WaterSettings");
 }
 

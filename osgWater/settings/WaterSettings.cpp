@@ -57,7 +57,7 @@ WaterSettings::WaterSettings()
       _underwaterModel(UNDERWATER_PHYSICAL), _glowEnabled(true), _glowIntensity(1.0f), _glowRadius(3.0f),
       _glowResolution(0.25f), _glowExponent(200.0f),
       _sunDirection(defaultSunDirection()), _sunColor(1.0f, 1.0f, 0.9f), _ambientColor(0.35f, 0.38f, 0.45f),
-      _exposure(1.0f), _revision(0)
+      _exposure(1.0f), _toneCurve(TONE_CLIP), _revision(0)
 {
 }
 
@@ -99,7 +99,7 @@ WaterSettings::WaterSettings(const WaterSettings& o, const osg::CopyOp& copyop)
       _underwaterModel(o._underwaterModel), _glowEnabled(o._glowEnabled), _glowIntensity(o._glowIntensity),
       _glowRadius(o._glowRadius), _glowResolution(o._glowResolution), _glowExponent(o._glowExponent),
       _sunDirection(o._sunDirection), _sunColor(o._sunColor), _ambientColor(o._ambientColor),
-      _exposure(o._exposure), _revision(0)
+      _exposure(o._exposure), _toneCurve(o._toneCurve), _revision(0)
 {
 }
 
@@ -142,6 +142,7 @@ const char* const kReflectionLookupNames[] = { "offset", "plane", "search" };
 const char* const kUnderwaterModelNames[] = { "physical", "thesis" };
 const char* const kCausticsGatherNames[] = { "auto", "copy", "texture", "cpu" };
 const char* const kCausticsMethodNames[] = { "photons", "mesh", "procedural", "procedural-screen" };
+const char* const kToneCurveNames[] = { "clip", "aces" };
 
 // an unknown value reads as the table's first name
 template <typename E, size_t N> const char* nameOf(const char* const (&names)[N], E value)
@@ -178,11 +179,14 @@ bool WaterSettings::causticsMethodFromName(const std::string& name, CausticsMeth
 {
     return valueOf(kCausticsMethodNames, name, m);
 }
+const char* WaterSettings::toneCurveName(ToneCurve c) { return nameOf(kToneCurveNames, c); }
+bool WaterSettings::toneCurveFromName(const std::string& name, ToneCurve& c) { return valueOf(kToneCurveNames, name, c); }
 std::string WaterSettings::fresnelModelNames() { return detail::joinedNames(kFresnelNames); }
 std::string WaterSettings::refractionLookupNames() { return detail::joinedNames(kRefractionLookupNames); }
 std::string WaterSettings::reflectionLookupNames() { return detail::joinedNames(kReflectionLookupNames); }
 std::string WaterSettings::underwaterModelNames() { return detail::joinedNames(kUnderwaterModelNames); }
 std::string WaterSettings::causticsGatherNames() { return detail::joinedNames(kCausticsGatherNames); }
+std::string WaterSettings::toneCurveNames() { return detail::joinedNames(kToneCurveNames); }
 std::string WaterSettings::causticsMethodNames() { return detail::joinedNames(kCausticsMethodNames); }
 void WaterSettings::setReflectionScale(float c) { _reflectionScale = clampOr("reflectionScale", c, 0.0f, 1000.0f, 1.0f); touch(); }
 void WaterSettings::setSearchSteps(int n) { _searchSteps = clampInt("searchSteps", n, 1, 8); touch(); }
@@ -216,6 +220,7 @@ void WaterSettings::setGlowExponent(float e) { _glowExponent = clampOr("glowExpo
 void WaterSettings::setSunColor(const osg::Vec3& c) { _sunColor = clampColor("sunColor", c, osg::Vec3(1.0f, 1.0f, 0.9f), 100.0f); touch(); }
 void WaterSettings::setAmbientColor(const osg::Vec3& c) { _ambientColor = clampColor("ambientColor", c, osg::Vec3(0.35f, 0.38f, 0.45f), 100.0f); touch(); }
 void WaterSettings::setExposure(float e) { _exposure = clampOr("exposure", e, 0.0f, 1000.0f, 1.0f); touch(); }
+void WaterSettings::setToneCurve(ToneCurve c) { _toneCurve = validEnum("toneCurve", c, TONE_ACES, TONE_CLIP); touch(); }
 
 void WaterSettings::setFovExtension(float nearExt, float farExt, float falloffHeight)
 {
