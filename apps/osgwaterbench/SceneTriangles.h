@@ -9,14 +9,17 @@ namespace osgWater { class WaterNode; class WaterSurface; }
 
 namespace bench {
 
+struct SceneShading;
+
 struct TriangleMesh {
     std::vector<glm::dvec3> vertices;
     std::vector<glm::uvec3> triangles;
     void add(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c);
 };
 
-//! Every triangle below the water node's children (transforms applied, local frame of the node).
-TriangleMesh collectScene(const osgWater::WaterNode& water);
+//! Every triangle below the water node's children (transforms applied, local frame of the node);
+//! with `shading`, each triangle's look too, in the same order.
+TriangleMesh collectScene(const osgWater::WaterNode& water, SceneShading* shading = nullptr);
 //! The water surface at time t: the grid displaced by the CPU wave sum (what the vertex shader
 //! does), or the user mesh as given.
 TriangleMesh collectWater(const osgWater::WaterSurface& surface, double t);
