@@ -1,19 +1,25 @@
-// The reference image's parts against what the GPU draws: the scene program's colour of a point
-// (SceneShading) is what the view shows there.
+// The reference image's parts: the scene program's colour of a point (SceneShading) against what
+// the GPU draws there, and the Whitted renderer (ReferenceRenderer) against the optics in closed form.
 #include "GLHarness.h"
 #include "RayCaster.h"
+#include "Reference.h"
+#include "ReferenceRenderer.h"
+#include "WaterCaster.h"
 #include "SceneShading.h"
 #include "SceneTriangles.h"
+#include "optics/Optics.h"
 #include "optics/Srgb.h"
 #include <osg/Material>
 #include <osg/NodeVisitor>
 #include <osg/TriangleFunctor>
 #include <osgDB/ReadFile>
+#include <osgWater/Sky>
 #include <osg/Texture2D>
 #include <glm/geometric.hpp>
 #include <algorithm>
 #include <cmath>
 #include <iostream>
+#include <memory>
 
 using namespace bench;
 using namespace testing_gl;
@@ -210,4 +216,244 @@ TEST(ReferenceShading, TheLakesTrianglesEachHaveTheirLook)
         }
     }
     std::cout << mesh.triangles.size() << " triangles, " << shading.looks.size() << " looks, " << textured << " textured\n";
+}
+
+namespace {
+
+// A water node's reference renderer and everything it refers to, at time 0
+struct ReferenceScene {
+    SceneShading shading;
+    std::unique_ptr<RayCaster> scene;
+    std::unique_ptr<WaterCaster> waterMesh;
+    std::unique_ptr<Reference> ref;
+    std::unique_ptr<ReferenceRenderer> renderer;
+    ReferenceScene(const osgWater::WaterNode& water, const ImageSetup& setup)
+    {
+        scene = std::make_unique<RayCaster>(collectScene(water, &shading));
+        waterMesh = std::make_unique<WaterCaster>(*water.getSurface(), 0.0);
+        const osgWater::WaterSettings& s = *water.getSettings();
+        ref = std::make_unique<Reference>(*scene, *waterMesh, *water.getSurface(), 0.0, Media{ s.getAirIOR(), s.getWaterIOR() });
+        renderer = std::make_unique<ReferenceRenderer>(*ref, shading, setup);
+    }
+};
+
+glm::dvec3 linear(const osg::Vec4& displayColour)
+{
+    return glm::dvec3(osgWater::optics::decodeSrgb(glm::vec3(displayColour.r(), displayColour.g(), displayColour.b())));
+}
+
+const osg::Vec4 kClear(0.45f, 0.6f, 0.85f, 1.0f);
+
+}
+
+// Flat water over a checkerboard 2 m down (its texels by the nearest, as the GPU magnifies them):
+// every pixel is the Optics mirror's colour, eq. 9 with exact Fresnel of eq. 5 along Snell's path
+// (the water's per-channel extinction towards its body colour) and the sky (the clear colour)
+// along the mirror ray, within 1e-5 (single-precision tint); pixels whose refracted hit lies within
+// 0.1 mm of a cell's edge (which cell is a matter of rounding) or past the board are left out.
+TEST(ReferenceRenderer, FlatWaterOverACheckerboardIsTheOpticsMirror)
+{
+    osg::ref_ptr<osgWater::WaterNode> water = new osgWater::WaterNode;
+    water->getSurface()->setWaves({});
+    water->getSurface()->setSize(400.0f);
+    const float depth = 2.0f, cell = 0.5f;
+    water->addChild(checkerPlane(-depth, 120.0f, cell));
+    const ImageSetup setup = imageSetup(*water, kClear);
+    ReferenceScene rs(*water, setup);
+    const osgWater::WaterSettings& s = *water->getSettings();
+    const double n1 = s.getAirIOR(), n2 = s.getWaterIOR();
+    const osg::Matrixd view = osg::Matrixd::lookAt(osg::Vec3d(0, -4, 3), osg::Vec3d(0, 6, -2), osg::Vec3d(0, 0, 1));
+    const osg::Matrixd proj = osg::Matrixd::perspective(50.0, 4.0 / 3.0, 0.1, 1000.0);
+    std::vector<double> error(80 * 60, -1.0);
+    forEachPixelRay(view, proj, 80, 60, [&](int x, int y, const glm::dvec3& eye, const glm::dvec3& d) {
+        const glm::dvec3 got = rs.renderer->radiance(eye, d, false);
+        glm::dvec3 expected = setup.sky(d);
+        if (d.z < 0.0) {
+            const glm::dvec3 U = eye + d * (-eye.z / d.z);
+            glm::dvec3 R;
+            ASSERT_TRUE(snell(d, glm::dvec3(0, 0, 1), n1, n2, R));
+            const glm::dvec3 X = U + R * ((-depth - U.z) / R.z);
+            const double fx = X.x / cell - std::floor(X.x / cell), fy = X.y / cell - std::floor(X.y / cell);
+            if (std::min({ fx, 1.0 - fx, fy, 1.0 - fy }) * cell < 1e-4) return;
+            if (std::max(std::fabs(X.x), std::fabs(X.y)) > 59.0) return; // past the board
+            const float bed = checkerAt(X.x, X.y, cell);
+            const glm::vec3 refr = osgWater::optics::waterTint(
+                glm::vec3(bed), glm::vec3(setup.body),
+                osgWater::optics::attenuation(glm::vec3(setup.extinction), float(glm::length(X - U))));
+            const double F = fresnelExact(-d.z, n1, n2);
+            expected = F * setup.sky(glm::reflect(d, glm::dvec3(0, 0, 1))) + (1.0 - F) * glm::dvec3(refr);
+        }
+        error[size_t(y * 80 + x)] = glm::length(got - expected);
+    });
+    double worst = 0.0;
+    int compared = 0;
+    for (double e : error)
+        if (e >= 0.0) {
+            worst = std::max(worst, e);
+            ++compared;
+        }
+    std::cout << compared << " pixels, worst " << worst << "\n";
+    EXPECT_GT(compared, 3000);
+    EXPECT_LT(worst, 1e-5);
+}
+
+// Calm water mirrors a red (emissive) quad standing on it: a pixel shows F red + (1 - F) the water
+// below wherever its mirror ray meets the quad, and F sky + (1 - F) the water below elsewhere,
+// with F exact Fresnel; the quad itself where the eye ray meets it first. Pixels whose ray passes
+// within 0.1 mm of the quad's edges are left out.
+TEST(ReferenceRenderer, CalmWaterMirrorsARedQuadWhereTheMirrorSays)
+{
+    osg::ref_ptr<osgWater::WaterNode> water = new osgWater::WaterNode;
+    water->getSurface()->setWaves({});
+    water->getSurface()->setSize(400.0f);
+    const osg::Vec4 red(0.9f, 0.05f, 0.05f, 1.0f);
+    const double qx = 1.5, qz0 = 0.2, qz1 = 2.0, qy = 10.0; // x in [-qx, qx], z in [qz0, qz1], at y = qy
+    water->addChild(emissiveQuad(osg::Vec3(-qx, qy, qz0), osg::Vec3(qx, qy, qz0), osg::Vec3(qx, qy, qz1),
+                                 osg::Vec3(-qx, qy, qz1), red));
+    ImageSetup setup = imageSetup(*water, kClear);
+    ReferenceScene rs(*water, setup);
+    const osgWater::WaterSettings& s = *water->getSettings();
+    const double n1 = s.getAirIOR(), n2 = s.getWaterIOR();
+    // what the quad's plane shows along a ray: the quad (0: outside it, -1: too near an edge)
+    auto onQuad = [&](const glm::dvec3& o, const glm::dvec3& d) {
+        if (d.y <= 0.0) return 0;
+        const glm::dvec3 p = o + d * ((qy - o.y) / d.y);
+        const double margin = std::min({ qx - std::fabs(p.x), p.z - qz0, qz1 - p.z });
+        return std::fabs(margin) < 1e-4 ? -1 : margin > 0.0 ? 1 : 0;
+    };
+    const osg::Matrixd view = osg::Matrixd::lookAt(osg::Vec3d(0.3, 0, 1.2), osg::Vec3d(0, 10, -0.8), osg::Vec3d(0, 0, 1));
+    const osg::Matrixd proj = osg::Matrixd::perspective(50.0, 4.0 / 3.0, 0.1, 1000.0);
+    std::vector<double> error(120 * 90, -1.0);
+    std::vector<int> mirrored(120 * 90, 0);
+    forEachPixelRay(view, proj, 120, 90, [&](int x, int y, const glm::dvec3& eye, const glm::dvec3& d) {
+        const glm::dvec3 got = rs.renderer->radiance(eye, d, false);
+        const int direct = onQuad(eye, d);
+        const double tQuad = d.y > 0.0 ? (qy - eye.y) / d.y : 1e30, tWater = d.z < 0.0 ? -eye.z / d.z : 1e30;
+        glm::dvec3 expected;
+        if (direct == -1 && tQuad < tWater) return;
+        if (direct == 1 && tQuad < tWater) {
+            expected = linear(red);
+        } else if (d.z < 0.0) {
+            const glm::dvec3 U = eye + d * tWater, Rr = glm::reflect(d, glm::dvec3(0, 0, 1));
+            const int seen = onQuad(U, Rr);
+            if (seen == -1) return;
+            glm::dvec3 R;
+            snell(d, glm::dvec3(0, 0, 1), n1, n2, R);
+            const double F = fresnelExact(-d.z, n1, n2);
+            const glm::dvec3 below = setup.body; // no bed: the body colour
+            expected = F * (seen ? linear(red) : setup.sky(Rr)) + (1.0 - F) * below;
+            mirrored[size_t(y * 120 + x)] = seen;
+        } else {
+            expected = setup.sky(d);
+        }
+        error[size_t(y * 120 + x)] = glm::length(got - expected);
+    });
+    double worst = 0.0;
+    int compared = 0, reflections = 0;
+    for (size_t i = 0; i < error.size(); ++i)
+        if (error[i] >= 0.0) {
+            worst = std::max(worst, error[i]);
+            ++compared;
+            reflections += mirrored[i];
+        }
+    std::cout << compared << " pixels, " << reflections << " show the quad's reflection, worst " << worst << "\n";
+    EXPECT_GT(reflections, 300);
+    EXPECT_LT(worst, 1e-6);
+}
+
+// A ray the waves send back under the level meets the water again and is followed: with water
+// that shows nothing of what lies below (a black body, opaque), a path that reflects twice and
+// then reaches the sky carries F1 F2 of the sky's light, F1 and F2 exact Fresnel at normals found
+// here independently (marching the wave's height along the ray in 2 mm steps); dropped, it would be
+// dark, and taken as the sky, F1 of it (which is what a limit of one water hit gives). Rays meeting
+// the water within 84 degrees of its normal (not clipping a crest) are taken.
+TEST(ReferenceRenderer, ARaySentBackUnderTheLevelIsFollowed)
+{
+    osg::ref_ptr<osgWater::WaterNode> water = new osgWater::WaterNode;
+    osgWater::WaterSurface* surface = water->getSurface();
+    surface->setWaves({ makeWave(0.0f, 1.0f, 3.0f, 0.35f) }); // slopes up to 0.73
+    surface->setSize(400.0f);
+    ImageSetup setup = imageSetup(*water, kClear);
+    setup.body = glm::dvec3(0.0);
+    setup.extinction = glm::dvec3(1e3);
+    const glm::dvec3 sky(0.2, 0.5, 1.0);
+    setup.sky = [sky](const glm::dvec3&) { return sky; };
+    ReferenceScene rs(*water, setup);
+    ImageSetup oneHit = setup;
+    oneHit.maxWaterHits = 1;
+    const ReferenceRenderer stopsAtOne(*rs.ref, rs.shading, oneHit);
+    const double n1 = water->getSettings()->getAirIOR(), n2 = water->getSettings()->getWaterIOR();
+    // the first crossing of the surface along o + s d (s up to 20 m; none once rising above the
+    // crests), by marching and bisection
+    auto crossing = [&](const glm::dvec3& o, const glm::dvec3& d, glm::dvec3& at) {
+        auto above = [&](double s) { const glm::dvec3 p = o + s * d; return p.z - surface->height(p.x, p.y, 0.0); };
+        double s0 = 1e-4;
+        const double f0 = above(s0);
+        for (double s1 = s0 + 0.002; s1 < 20.0 && (d.z < 0.0 || (o + s0 * d).z < 0.36); s0 = s1, s1 += 0.002) {
+            if ((above(s1) > 0.0) == (f0 > 0.0)) continue;
+            for (int i = 0; i < 60; ++i) {
+                const double m = 0.5 * (s0 + s1);
+                ((above(m) > 0.0) == (f0 > 0.0) ? s0 : s1) = m;
+            }
+            at = o + 0.5 * (s0 + s1) * d;
+            return true;
+        }
+        return false;
+    };
+    auto normalAt = [&](const glm::dvec3& p) {
+        const osg::Vec3d n = surface->normal(p.x, p.y, 0.0);
+        return glm::normalize(glm::dvec3(n.x(), n.y(), n.z()));
+    };
+    int followed = 0;
+    double worst = 0.0, worstAtTheLimit = 0.0;
+    for (int i = 0; i < 60 * 80 && followed < 20; ++i) {
+        const glm::dvec3 eye(0.0, 0.05 * (i % 60), 0.6); // over a wavelength, 25 cm above the crests
+        const double down = 0.2 + 0.005 * (i / 60);       // descending 11 to 31 degrees, along the waves
+        const glm::dvec3 d = glm::normalize(glm::dvec3(0.0, 1.0, -down));
+        glm::dvec3 U1, U2, U3;
+        if (!crossing(eye, d, U1)) continue;
+        const glm::dvec3 N1 = normalAt(U1), R1 = glm::reflect(d, N1);
+        if (-glm::dot(d, N1) < 0.1) continue; // a ray that clips a crest: see ReferenceRenderer.h
+        if (R1.z >= 0.0 || !crossing(U1, R1, U2)) continue; // not sent back under the level
+        const glm::dvec3 N2 = normalAt(U2), R2 = glm::reflect(R1, N2);
+        if (-glm::dot(R1, N2) < 0.1 || R2.z <= 0.0 || crossing(U2, R2, U3)) continue; // grazing, or not straight to the sky
+        const double F1 = fresnelExact(-glm::dot(d, N1), n1, n2), F2 = fresnelExact(-glm::dot(R1, N2), n1, n2);
+        const glm::dvec3 got = rs.renderer->radiance(eye, d, false);
+        const glm::dvec3 expected = F1 * F2 * sky;
+        worst = std::max(worst, glm::length(got - expected) / glm::length(expected));
+        EXPECT_GT(glm::length(got - F1 * sky), 0.5 * glm::length(F1 * sky - expected)) << "taken as the sky";
+        // past the limit of water hits the ray goes on as if the water were not there: to the sky
+        worstAtTheLimit = std::max(worstAtTheLimit, glm::length(stopsAtOne.radiance(eye, d, false) - F1 * sky) / glm::length(F1 * sky));
+        ++followed;
+    }
+    std::cout << followed << " rays sent back under the level, worst relative error " << worst << " (with one water hit, "
+              << worstAtTheLimit << " from the sky's F1)\n";
+    EXPECT_GE(followed, 5);
+    EXPECT_LT(worst, 1e-9);
+    EXPECT_LT(worstAtTheLimit, 1e-9);
+}
+
+// A sky under the water node is the light of the rays that meet nothing, not a triangle of the
+// scene: the reference collects the quad's two triangles alone, and a ray up into the sky carries
+// the sky's own radiance (without a sky, the clear colour decoded)
+TEST(ReferenceRenderer, ASkyIsTheLightOfRaysThatMeetNothing)
+{
+    osg::ref_ptr<osgWater::WaterNode> water = new osgWater::WaterNode;
+    water->addChild(emissiveQuad(osg::Vec3(-1, 5, 1), osg::Vec3(1, 5, 1), osg::Vec3(1, 5, 2), osg::Vec3(-1, 5, 2),
+                                 osg::Vec4(1, 0, 0, 1)));
+    const glm::dvec3 up = glm::normalize(glm::dvec3(0.2, -0.3, 1.0));
+    {
+        ReferenceScene rs(*water, imageSetup(*water, kClear));
+        EXPECT_LT(glm::length(rs.renderer->radiance(glm::dvec3(0, 0, 1), up, false) - linear(kClear)), 1e-12);
+    }
+    osg::ref_ptr<osgWater::Sky> sky = new osgWater::Sky;
+    sky->setSunDirection(osg::Vec3(0.5f, 0.5f, 0.7f));
+    water->addChild(sky.get());
+    SceneShading shading;
+    EXPECT_EQ(collectScene(*water, &shading).triangles.size(), 2u);
+    ReferenceScene rs(*water, imageSetup(*water, kClear));
+    const osg::Vec3 expected = sky->getRadiance(osg::Vec3(float(up.x), float(up.y), float(up.z)));
+    const glm::dvec3 got = rs.renderer->radiance(glm::dvec3(0, 0, 1), up, false);
+    EXPECT_LT(glm::length(got - glm::dvec3(expected.x(), expected.y(), expected.z())), 1e-7);
+    EXPECT_GT(glm::length(got - linear(kClear)), 0.01);
 }

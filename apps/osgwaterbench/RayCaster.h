@@ -29,6 +29,7 @@ public:
     //! Nearest hit of org + t dir with tnear <= t <= tfar (dir need not be unit; t is in its units).
     Hit intersect(const glm::dvec3& org, const glm::dvec3& dir, double tnear = 0.0, double tfar = 1e30) const;
     size_t size() const { return _mesh.triangles.size(); }
+    const TriangleMesh& mesh() const { return _mesh; }
 
 private:
     TriangleMesh _mesh;

@@ -110,6 +110,25 @@ bool pseudoInverse(const glm::dvec3& jx, const glm::dvec3& jy, glm::mat2x3& out)
 
 }
 
+void forEachPixelRay(const osg::Matrixd& viewMatrix, const osg::Matrixd& projection, int width, int height,
+                     const std::function<void(int, int, const glm::dvec3&, const glm::dvec3&)>& pixel)
+{
+    const osg::Matrixd inv = osg::Matrixd::inverse(viewMatrix * projection);
+    const glm::dvec3 eye = toGlm(osg::Matrixd::inverse(viewMatrix).getTrans());
+    auto rows = [&](int y0, int y1) {
+        for (int y = y0; y < y1; ++y)
+            for (int x = 0; x < width; ++x) {
+                const double nx = (x + 0.5) / width * 2.0 - 1.0, ny = (y + 0.5) / height * 2.0 - 1.0;
+                const glm::dvec3 dir = glm::normalize(toGlm(osg::Vec3d(nx, ny, 1.0) * inv) - toGlm(osg::Vec3d(nx, ny, -1.0) * inv));
+                pixel(x, y, eye, dir);
+            }
+    };
+    const int threads = std::max(1u, std::min(8u, std::thread::hardware_concurrency()));
+    std::vector<std::thread> pool;
+    for (int i = 0; i < threads; ++i) pool.emplace_back(rows, height * i / threads, height * (i + 1) / threads);
+    for (std::thread& th : pool) th.join();
+}
+
 ReferenceImage traceView(const Reference& ref, const osg::Matrixd& viewMatrix, const osg::Matrixd& projection,
                          int width, int height)
 {
@@ -118,20 +137,9 @@ ReferenceImage traceView(const Reference& ref, const osg::Matrixd& viewMatrix, c
     img.height = height;
     img.pixels.resize(size_t(width) * height);
     std::vector<PixelTrace> full(size_t(width) * height);
-    const osg::Matrixd inv = osg::Matrixd::inverse(viewMatrix * projection);
-    const glm::dvec3 eye = toGlm(osg::Matrixd::inverse(viewMatrix).getTrans());
-    auto rows = [&](int y0, int y1) {
-        for (int y = y0; y < y1; ++y)
-            for (int x = 0; x < width; ++x) {
-                const double nx = (x + 0.5) / width * 2.0 - 1.0, ny = (y + 0.5) / height * 2.0 - 1.0;
-                const glm::dvec3 dir = glm::normalize(toGlm(osg::Vec3d(nx, ny, 1.0) * inv) - toGlm(osg::Vec3d(nx, ny, -1.0) * inv));
-                full[size_t(y) * width + x] = ref.trace(eye, dir);
-            }
-    };
-    const int threads = std::max(1u, std::min(8u, std::thread::hardware_concurrency()));
-    std::vector<std::thread> pool;
-    for (int i = 0; i < threads; ++i) pool.emplace_back(rows, height * i / threads, height * (i + 1) / threads);
-    for (std::thread& th : pool) th.join();
+    forEachPixelRay(viewMatrix, projection, width, height, [&](int x, int y, const glm::dvec3& eye, const glm::dvec3& dir) {
+        full[size_t(y) * width + x] = ref.trace(eye, dir);
+    });
 
     auto hitOk = [&](int x, int y, const Hit& h0) {
         if (x < 0 || y < 0 || x >= width || y >= height) return false;

@@ -7,6 +7,7 @@
 #include <osg/Matrixd>
 #include <glm/mat2x3.hpp>
 #include <cstdint>
+#include <functional>
 
 namespace osgWater { class WaterSurface; }
 
@@ -46,9 +47,12 @@ public:
     //! The reference for the ray eye + s dir (dir unit).
     PixelTrace trace(const glm::dvec3& eye, const glm::dvec3& dir) const;
     const RayCaster& scene() const { return _scene; }
+    const WaterCaster& water() const { return _water; }
+    const Media& media() const { return _media; }
+    //! The water's unit normal at a hit of water(), facing up (over the waves the analytic one).
+    glm::dvec3 normalAt(const Hit& h) const;
 
 private:
-    glm::dvec3 normalAt(const Hit& h) const;
     //! Whether the reflection pass, the eye mirrored in the level drawing the eye's side of it, has
     //! the mirror ray's hit in view: the hit (for a miss, the sky along the ray) lies on that side and
     //! is the first thing on the mirrored eye's line of sight there. Where it is not, no lookup in
@@ -77,6 +81,11 @@ struct ReferenceImage {
     size_t waterPixels = 0;
     const PixelRef& at(int x, int y) const { return pixels[size_t(y) * width + x]; }
 };
+
+//! Calls `pixel(x, y, eye, dir)` for every pixel centre of a width x height view (row 0 at the
+//! bottom), from a few threads, each with its own rows: the unit ray through it, local frame.
+void forEachPixelRay(const osg::Matrixd& viewMatrix, const osg::Matrixd& projection, int width, int height,
+                     const std::function<void(int, int, const glm::dvec3&, const glm::dvec3&)>& pixel);
 
 //! Traces every pixel centre of a width x height view (viewMatrix, projection: local frame -> clip).
 ReferenceImage traceView(const Reference& ref, const osg::Matrixd& viewMatrix, const osg::Matrixd& projection,

@@ -36,6 +36,16 @@ glm::dvec3 barycentric(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec
 
 }
 
+glm::dvec3 sampleNearest(const osg::Image& image, const glm::dvec2& st, osg::Texture::WrapMode wrapS,
+                         osg::Texture::WrapMode wrapT)
+{
+    const int w = image.s(), h = image.t();
+    if (w <= 0 || h <= 0) return glm::dvec3(1.0);
+    const int s = wrapIndex(int(std::floor(st.x * w)), w, wrapS), t = wrapIndex(int(std::floor(st.y * h)), h, wrapT);
+    const osg::Vec4 c = image.getColor(unsigned(s), unsigned(t));
+    return glm::dvec3(c.r(), c.g(), c.b());
+}
+
 glm::dvec3 sampleBilinear(const osg::Image& image, const glm::dvec2& st, osg::Texture::WrapMode wrapS,
                           osg::Texture::WrapMode wrapT)
 {
@@ -79,7 +89,8 @@ glm::dvec3 SceneShading::shade(const TriangleMesh& mesh, const Hit& hit, const g
     const glm::dvec3 lit = look.emission + look.ambient * light.ambient + look.diffuse * light.sunColor * ndl;
     if (!look.texture) return lit;
     const glm::dvec2 st = weight.x * t.texCoord[0] + weight.y * t.texCoord[1] + weight.z * t.texCoord[2];
-    const glm::dvec3 texel = sampleBilinear(*look.texture, st, look.wrapS, look.wrapT);
+    const glm::dvec3 texel = look.nearest ? sampleNearest(*look.texture, st, look.wrapS, look.wrapT)
+                                          : sampleBilinear(*look.texture, st, look.wrapS, look.wrapT);
     return lit * glm::dvec3(osgWater::optics::decodeSrgb(glm::vec3(texel)));
 }
 

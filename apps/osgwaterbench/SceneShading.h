@@ -18,6 +18,7 @@ struct SurfaceLook {
     double alpha = 1.0;
     osg::ref_ptr<const osg::Image> texture;
     osg::Texture::WrapMode wrapS = osg::Texture::REPEAT, wrapT = osg::Texture::REPEAT;
+    bool nearest = false; //!< magnified by the nearest texel (GL_NEAREST), not filtered
 };
 
 //! A triangle's attributes at its three corners, in the water node's local frame.
@@ -41,12 +42,14 @@ struct SceneShading {
     //! collected with this shading) meets a ray along `dir`, without caustics, shadows and fog:
     //! emission + ambient + diffuse sun, lit per vertex as scene.vert lights (n.l at each corner,
     //! for the face the ray sees, interpolated), times the texture's texel decoded after bilinear
-    //! filtering at its finest level.
+    //! filtering at its finest level (or the nearest texel, as the texture magnifies).
     glm::dvec3 shade(const TriangleMesh& mesh, const Hit& hit, const glm::dvec3& dir, const SceneLight& light) const;
 };
 
-//! Bilinear filtering of an image at texture coordinates `st`, as GL filters GL_LINEAR at level 0
+//! The nearest texel, and bilinear filtering, of an image at texture coordinates `st`, as GL filters GL_LINEAR at level 0
 //! (texel centres at half-integers, the wrap modes of the texture); the image's own values.
+glm::dvec3 sampleNearest(const osg::Image& image, const glm::dvec2& st, osg::Texture::WrapMode wrapS,
+                         osg::Texture::WrapMode wrapT);
 glm::dvec3 sampleBilinear(const osg::Image& image, const glm::dvec2& st, osg::Texture::WrapMode wrapS,
                           osg::Texture::WrapMode wrapT);
 

@@ -1,6 +1,7 @@
 #include "SceneTriangles.h"
 #include "SceneShading.h"
 #include "optics/Srgb.h"
+#include <osgWater/Sky>
 #include <osgWater/WaterNode>
 #include <osg/Geometry>
 #include <osg/NodeVisitor>
@@ -66,6 +67,7 @@ struct LookState {
             l.texture = texture->getImage(0);
             l.wrapS = texture->getWrap(osg::Texture::WRAP_S);
             l.wrapT = texture->getWrap(osg::Texture::WRAP_T);
+            l.nearest = texture->getFilter(osg::Texture::MAG_FILTER) == osg::Texture::NEAREST;
         }
         return l;
     }
@@ -120,6 +122,12 @@ public:
         _state.apply(n.getStateSet());
         traverse(n);
         _state = saved;
+    }
+    void apply(osg::Geode& g) override
+    {
+        // the sky's screen triangle is not in the scene: a ray that meets nothing has its light
+        if (dynamic_cast<osgWater::Sky*>(&g)) return;
+        apply(static_cast<osg::Node&>(g));
     }
     void apply(osg::Transform& t) override
     {

@@ -17,8 +17,9 @@ struct TriangleMesh {
     void add(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c);
 };
 
-//! Every triangle below the water node's children (transforms applied, local frame of the node);
-//! with `shading`, each triangle's look too, in the same order.
+//! Every triangle below the water node's children (transforms applied, local frame of the node),
+//! but an osgWater::Sky's (the light of rays that meet nothing); with `shading`, each triangle's
+//! look too, in the same order.
 TriangleMesh collectScene(const osgWater::WaterNode& water, SceneShading* shading = nullptr);
 //! The water surface at time t: the grid displaced by the CPU wave sum (what the vertex shader
 //! does), or the user mesh as given.

@@ -1,0 +1,91 @@
+#include "ReferenceRenderer.h"
+#include "optics/Srgb.h"
+#include <osgWater/Sky>
+#include <osgWater/WaterNode>
+#include <glm/geometric.hpp>
+#include <cmath>
+
+namespace bench {
+
+namespace {
+
+glm::dvec3 toGlm(const osg::Vec3& v) { return glm::dvec3(v.x(), v.y(), v.z()); }
+
+// Seen through `length` metres of water: towards the body colour by each channel's extinction
+glm::dvec3 throughWater(const glm::dvec3& c, double length, const ImageSetup& s)
+{
+    const glm::dvec3 a(std::exp(-s.extinction.x * length), std::exp(-s.extinction.y * length), std::exp(-s.extinction.z * length));
+    return s.body + a * (c - s.body);
+}
+
+}
+
+ImageSetup imageSetup(const osgWater::WaterNode& water, const osg::Vec4& clearColour)
+{
+    ImageSetup s;
+    const osgWater::WaterSettings& settings = *water.getSettings();
+    s.light.towardsSun = glm::normalize(toGlm(settings.getSunDirection()));
+    s.light.sunColor = toGlm(settings.getSunColor());
+    s.light.ambient = toGlm(settings.getAmbientColor());
+    s.body = toGlm(settings.getBodyColor());
+    s.extinction = toGlm(settings.getViewExtinction());
+    osg::ref_ptr<const osgWater::Sky> sky;
+    for (unsigned int i = 0; i < water.getNumChildren() && !sky; ++i)
+        sky = dynamic_cast<const osgWater::Sky*>(water.getChild(i));
+    if (sky) {
+        s.sky = [sky](const glm::dvec3& d) { return toGlm(sky->getRadiance(osg::Vec3(float(d.x), float(d.y), float(d.z)))); };
+    } else {
+        const glm::dvec3 clear(osgWater::optics::decodeSrgb(glm::vec3(clearColour.r(), clearColour.g(), clearColour.b())));
+        s.sky = [clear](const glm::dvec3&) { return clear; };
+    }
+    return s;
+}
+
+ReferenceRenderer::ReferenceRenderer(const Reference& ref, const SceneShading& shading, ImageSetup setup)
+    : _ref(ref), _shading(shading), _setup(std::move(setup))
+{
+}
+
+glm::dvec3 ReferenceRenderer::radiance(const glm::dvec3& org, const glm::dvec3& dir, bool inWater) const
+{
+    return follow(org, dir, inWater, 0);
+}
+
+glm::dvec3 ReferenceRenderer::follow(const glm::dvec3& org, const glm::dvec3& dir, bool inWater, int waterHits) const
+{
+    const double eps = 1e-6 * (1.0 + glm::length(org));
+    const Hit w = waterHits < _setup.maxWaterHits ? _ref.water().intersect(org, dir, eps) : Hit{};
+    const Hit s = _ref.scene().intersect(org, dir, eps, w.hit ? w.t : 1e30);
+    glm::dvec3 c;
+    double length = 0.0; // of this stretch
+    if (s.hit && (!w.hit || s.t < w.t)) {
+        c = _shading.shade(_ref.scene().mesh(), s, dir, _setup.light);
+        length = s.t;
+    } else if (w.hit) {
+        const Media& m = _ref.media();
+        const double n1 = inWater ? m.water : m.air, n2 = inWater ? m.air : m.water;
+        glm::dvec3 N = _ref.normalAt(w);
+        if (glm::dot(N, dir) > 0.0) N = -N; // facing the ray, whichever side it comes from
+        const double F = fresnelExact(-glm::dot(dir, N), n1, n2);
+        c = F * follow(w.point, glm::reflect(dir, N), inWater, waterHits + 1);
+        glm::dvec3 R;
+        if (F < 1.0 && snell(dir, N, n1, n2, R)) c += (1.0 - F) * follow(w.point, R, !inWater, waterHits + 1);
+        length = w.t;
+    } else {
+        if (!inWater) return _setup.sky(dir);
+        return _setup.body; // an endless stretch of water
+    }
+    return inWater ? throughWater(c, length, _setup) : c;
+}
+
+std::vector<glm::dvec3> ReferenceRenderer::render(const osg::Matrixd& viewMatrix, const osg::Matrixd& projection,
+                                                  int width, int height) const
+{
+    std::vector<glm::dvec3> image(size_t(width) * height);
+    forEachPixelRay(viewMatrix, projection, width, height, [&](int x, int y, const glm::dvec3& eye, const glm::dvec3& dir) {
+        image[size_t(y) * width + x] = radiance(eye, dir, _ref.eyeBelow(eye));
+    });
+    return image;
+}
+
+}

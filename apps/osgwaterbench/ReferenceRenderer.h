@@ -1,0 +1,58 @@
+// The image a view should show, by Whitted ray tracing with the kit's shading model, on the exact
+// machinery of the reference (the waves in double precision, Embree over the scene's triangles):
+// - at the water, the ray splits by exact unpolarised Fresnel into its mirror ray and Snell's
+//   refracted ray (none under total internal reflection), each followed on, through further
+//   meetings with the water, up to a limit of water hits per path (past it the ray goes on as if
+//   the water were not there);
+// - a scene point has the scene program's colour (SceneShading);
+// - a stretch under water is seen through the water as the kit sees it: blended towards its body
+//   colour by the per-channel extinction over its length (eq. 10), the body colour itself where the
+//   ray meets nothing;
+// - a ray in the air that meets nothing has the sky's light: the WaterNode's osgWater::Sky, else
+//   the view's clear colour.
+// All in linear light; the view shows it exposed, through the tone curve, encoded.
+// The water is met where WaterSurface::intersect meets it: near the surface it steps a sixteenth of
+// the shortest wave, so a ray that clips a crest over less than that passes it.
+#pragma once
+#include "Reference.h"
+#include "SceneShading.h"
+#include <osg/Vec4>
+#include <functional>
+
+namespace osgWater { class WaterNode; }
+
+namespace bench {
+
+//! What the reference image is made with, besides the geometry.
+struct ImageSetup {
+    SceneLight light;
+    glm::dvec3 body{ 0.0 };       //!< the water's body colour, linear (WaterSettings::getBodyColor)
+    glm::dvec3 extinction{ 0.0 }; //!< per metre, per channel (WaterSettings::getViewExtinction)
+    std::function<glm::dvec3(const glm::dvec3&)> sky; //!< linear light along a ray in the air that meets nothing
+    int maxWaterHits = 8;         //!< water meetings followed per path
+};
+
+//! The setup of a water node's scene: its sun, ambient and water, and its sky (an osgWater::Sky
+//! child, else `clearColour`, a display value, decoded).
+ImageSetup imageSetup(const osgWater::WaterNode& water, const osg::Vec4& clearColour);
+
+class ReferenceRenderer
+{
+public:
+    //! `shading` was collected with the scene's triangles `ref` casts against.
+    ReferenceRenderer(const Reference& ref, const SceneShading& shading, ImageSetup setup);
+    //! The linear light arriving at `org` along unit `dir`, the ray starting in the water or not.
+    glm::dvec3 radiance(const glm::dvec3& org, const glm::dvec3& dir, bool inWater) const;
+    //! Every pixel centre of a view (row 0 at the bottom), linear light; the eye's medium from the
+    //! wave at its place.
+    std::vector<glm::dvec3> render(const osg::Matrixd& viewMatrix, const osg::Matrixd& projection, int width,
+                                   int height) const;
+
+private:
+    glm::dvec3 follow(const glm::dvec3& org, const glm::dvec3& dir, bool inWater, int waterHits) const;
+    const Reference& _ref;
+    const SceneShading& _shading;
+    ImageSetup _setup;
+};
+
+}
