@@ -8,6 +8,9 @@
 #include "PhotonTracer.h"
 #include "Probe.h"
 #include "Reference.h"
+#include "ReferenceRenderer.h"
+#include "ImageCompare.h"
+#include "SceneShading.h"
 #include "optics/Optics.h"
 #include "frame/PassMath.h"
 #include "frame/SceneLighting.h"
@@ -222,6 +225,24 @@ struct FlatScene {
                                              160, 120);
         return measureView(img, e, scene);
     }
+
+    //! The view against its reference image (Whitted, exact Fresnel), over the water
+    ImageErrors imageErrors()
+    {
+        const Estimate e = probe.capture(*water, 0.0);
+        SceneShading shading;
+        const RayCaster scene(collectScene(*water, &shading));
+        const WaterCaster waterMesh(*surface, 0.0);
+        const osgWater::WaterSettings& s = *water->getSettings();
+        const Reference ref(scene, waterMesh, *surface, 0.0, Media{ s.getAirIOR(), s.getWaterIOR() });
+        const ReferenceRenderer renderer(ref, shading, imageSetup(*water, probe.camera()->getClearColor()));
+        const osg::Matrixd view = probe.camera()->getViewMatrix(), proj = probe.camera()->getProjectionMatrix();
+        const ReferenceImage traced = traceView(ref, view, proj, 160, 120);
+        std::vector<bool> water(traced.pixels.size());
+        for (size_t i = 0; i < water.size(); ++i) water[i] = traced.pixels[i].flags & PixelRef::WATER;
+        return compareWithReference(*e.color, renderer.render(view, proj, 160, 120),
+                                    DisplayTransform{ s.getExposure(), s.getToneCurve() }, water);
+    }
 };
 
 }
@@ -245,6 +266,34 @@ TEST(BenchMetric, IterativeSearchIsWithinHalfAPixelOnFlatWater)
     // the shader's exact Fresnel against the reference's (float precision, per-pixel normal): 0.002
     const Quantiles f = quantiles(v.fresnel);
     EXPECT_LT(f.max, 0.002);
+}
+
+// The image error sees a wrong Fresnel: flat water over a uniform bed (a checkerboard's edges would
+// measure the refraction texture's resampling) with the exact model is within one just-noticeable
+// difference of its reference image on average (CIEDE2000 < 1, SSIM > 0.9); with Fresnel's power
+// model at a fifth of its exponent (far too much reflection) the mean difference is more than three
+// times as large and the similarity lower (measured: 0.012 and SSIM 1.000 against 16.5 and 0.960)
+TEST(BenchMetric, TheImageErrorSeesAWrongFresnel)
+{
+    FlatScene sc;
+    REQUIRE_GL(sc.probe);
+    sc.water->removeChildren(0, sc.water->getNumChildren());
+    const float h = 60.0f, z = -float(kDepth);
+    sc.water->addChild(testing_gl::emissiveQuad(osg::Vec3(-h, -h, z), osg::Vec3(h, -h, z), osg::Vec3(h, h, z),
+                                                osg::Vec3(-h, h, z), osg::Vec4(testing_gl::kBedGrey, 1.0f)));
+    osgWater::WaterSettings* s = sc.water->getSettings();
+    s->setFresnelModel(osgWater::WaterSettings::FRESNEL_EXACT);
+    const ImageErrors right = sc.imageErrors();
+    s->setFresnelModel(osgWater::WaterSettings::FRESNEL_POWER);
+    s->setFresnelExponent(0.2f * s->getFresnelExponent());
+    const ImageErrors wrong = sc.imageErrors();
+    std::cout << "exact Fresnel: SSIM " << right.ssimWater << ", CIEDE2000 mean " << right.deltaEMeanWater << " p95 "
+              << right.deltaEP95Water << "; wrong: SSIM " << wrong.ssimWater << ", mean " << wrong.deltaEMeanWater
+              << " p95 " << wrong.deltaEP95Water << "\n";
+    EXPECT_LT(right.deltaEMeanWater, 1.0);
+    EXPECT_GT(right.ssimWater, 0.9);
+    EXPECT_GT(wrong.deltaEMeanWater, 3.0 * right.deltaEMeanWater);
+    EXPECT_LT(wrong.ssimWater, right.ssimWater);
 }
 
 TEST(BenchMetric, WrongIndexOfRefractionReportsALargeError)
@@ -494,6 +543,7 @@ TEST(Osgwaterbench, QuickRunWritesValidJson)
     EXPECT_NE(md.find("| default |"), std::string::npos);
     EXPECT_NE(md.find("![speed against error]"), std::string::npos) << "gnuplot did not make the plot";
     EXPECT_TRUE(std::ifstream(out + "/docs/benchmark-speed-error.png").good());
+    EXPECT_TRUE(std::ifstream(out + "/docs/benchmark-reference.png").good()) << "the first view's triplet";
     std::ifstream in(out + "/results.json");
     ASSERT_TRUE(in.good());
     const nlohmann::json j = nlohmann::json::parse(in); // throws (and fails) on invalid JSON
@@ -502,8 +552,15 @@ TEST(Osgwaterbench, QuickRunWritesValidJson)
     for (const nlohmann::json& r : j) {
         for (const char* k : { "technique", "steps", "texture_size", "view", "frame_ms", "plain_ms", "ratio",
                                "refraction_px_median", "refraction_px_p99", "refraction_px_max",
-                               "refraction_m_median", "nan_pixels" })
+                               "refraction_m_median", "nan_pixels", "image_ssim", "image_delta_e_mean",
+                               "image_delta_e_p95", "image_ssim_frame", "image_delta_e_mean_frame",
+                               "image_delta_e_p95_frame" })
             EXPECT_TRUE(r.contains(k)) << k;
+        // the view against its reference image: measured, and a similarity, a difference
+        EXPECT_GT(r["image_ssim"].get<double>(), 0.0);
+        EXPECT_LE(r["image_ssim"].get<double>(), 1.0);
+        EXPECT_GE(r["image_delta_e_mean"].get<double>(), 0.0);
+        EXPECT_GE(r["image_delta_e_p95"].get<double>(), r["image_delta_e_mean"].get<double>() * 0.5);
         EXPECT_GT(r["frame_ms"].get<double>(), 0.0);
         EXPECT_GT(r["plain_ms"].get<double>(), 0.0);
         EXPECT_NEAR(r["ratio"].get<double>(), r["frame_ms"].get<double>() / r["plain_ms"].get<double>(), 1e-9);

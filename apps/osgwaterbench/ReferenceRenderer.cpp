@@ -78,12 +78,12 @@ glm::dvec3 ReferenceRenderer::follow(const glm::dvec3& org, const glm::dvec3& di
     return inWater ? throughWater(c, length, _setup) : c;
 }
 
-std::vector<glm::dvec3> ReferenceRenderer::render(const osg::Matrixd& viewMatrix, const osg::Matrixd& projection,
+std::vector<glm::vec3> ReferenceRenderer::render(const osg::Matrixd& viewMatrix, const osg::Matrixd& projection,
                                                   int width, int height) const
 {
-    std::vector<glm::dvec3> image(size_t(width) * height);
+    std::vector<glm::vec3> image(size_t(width) * height);
     forEachPixelRay(viewMatrix, projection, width, height, [&](int x, int y, const glm::dvec3& eye, const glm::dvec3& dir) {
-        image[size_t(y) * width + x] = radiance(eye, dir, _ref.eyeBelow(eye));
+        image[size_t(y) * width + x] = glm::vec3(radiance(eye, dir, _ref.eyeBelow(eye)));
     });
     return image;
 }

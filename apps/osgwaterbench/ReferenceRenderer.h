@@ -43,9 +43,9 @@ public:
     ReferenceRenderer(const Reference& ref, const SceneShading& shading, ImageSetup setup);
     //! The linear light arriving at `org` along unit `dir`, the ray starting in the water or not.
     glm::dvec3 radiance(const glm::dvec3& org, const glm::dvec3& dir, bool inWater) const;
-    //! Every pixel centre of a view (row 0 at the bottom), linear light; the eye's medium from the
-    //! wave at its place.
-    std::vector<glm::dvec3> render(const osg::Matrixd& viewMatrix, const osg::Matrixd& projection, int width,
+    //! Every pixel centre of a view (row 0 at the bottom), linear light (single precision: a view's
+    //! worth is kept per view for every technique); the eye's medium from the wave at its place.
+    std::vector<glm::vec3> render(const osg::Matrixd& viewMatrix, const osg::Matrixd& projection, int width,
                                    int height) const;
 
 private:

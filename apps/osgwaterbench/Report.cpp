@@ -64,6 +64,12 @@ nlohmann::json toJson(const Record& r)
     // the blocks' means: a bias shows as a difference, noise and blur only in the RMSE
     j["caustics_mean_reference"] = number(r.causticsErrors.meanReference);
     j["caustics_mean_rendered"] = number(r.causticsErrors.meanRendered);
+    j["image_ssim"] = number(r.image.ssimWater);
+    j["image_delta_e_mean"] = number(r.image.deltaEMeanWater);
+    j["image_delta_e_p95"] = number(r.image.deltaEP95Water);
+    j["image_ssim_frame"] = number(r.image.ssimFrame);
+    j["image_delta_e_mean_frame"] = number(r.image.deltaEMeanFrame);
+    j["image_delta_e_p95_frame"] = number(r.image.deltaEP95Frame);
     j["nan_pixels"] = r.nanPixels;
     return j;
 }
@@ -236,7 +242,11 @@ bool writeDocs(const std::string& dir, const RunInfo& info, const std::vector<Re
        << "in the same run just before and after each technique (ratio = frame / plain)\n"
        << "- Reference: the eye rays against the analytic waves at the view's time (double precision), then Embree "
        << "ray casting over the scene's triangles; caustics by "
-       << info.photons << " photons traced from the sun\n"
+       << info.photons << " photons traced from the sun; the reference image by Whitted ray tracing on the same "
+       << "machinery (exact Fresnel, up to 8 water hits a path, the scene program's colours; no caustics or "
+       << "shadows yet), shown as the technique shows its light (exposure, tone curve, sRGB); "
+       << "`triplets/` beside the run's output has each view's render | reference | CIEDE2000 (black 0, white ≥ 10) "
+       << "for the default, and `benchmark-reference.png` the first view's\n"
        << "- Height queries (`WaterNode::getSurfaceHeightAt` with the normal, the scene's waves, one thread): "
        << fmt(info.heightQueriesPerSecond / 1.0e6, 2, " million") << " per second\n\n";
 
@@ -284,6 +294,10 @@ bool writeDocs(const std::string& dir, const RunInfo& info, const std::vector<Re
         md << "| default caustics RMSE ≤ 10% on every view (worst: " << def->worstCausticsView << ", the reference's noise "
            << pct(def->worstCausticsNoise) << ") | " << pct(def->worstCausticsRmse) << " | "
            << status(def->worstCausticsRmse, def->worstCausticsRmse <= 0.10) << " |\n";
+        md << "| default image over the water: SSIM ≥ 0.95 on every view | " << fmt(def->worstImageSsim, 3) << " | "
+           << status(def->worstImageSsim, def->worstImageSsim >= 0.95) << " |\n";
+        md << "| default image over the water: mean CIEDE2000 ≤ 2 on every view (worst: " << def->worstImageView << ") | "
+           << fmt(def->worstImageDeltaE, 2) << " | " << status(def->worstImageDeltaE, def->worstImageDeltaE <= 2.0) << " |\n";
     }
 
     // the presets: speed from the ablation, errors from the techniques
@@ -346,14 +360,17 @@ bool writeDocs(const std::string& dir, const RunInfo& info, const std::vector<Re
        << "from where the pixel's ray first meets the waves. "
        << "Caustics: relative RMSE of the caustics texture against photon tracing (blocks of "
        << "texels about 1.2 m on a side, whatever the texture's window and resolution; the reference's own "
-       << "counting noise in brackets).\n\n"
-       << "| technique | ratio | frame ms | refr. px median | p95 | p99 | max | > 2 px | refr. m median "
+       << "counting noise in brackets). Image: the view as shown against the reference image over the "
+       << "reference's water pixels, the luma SSIM (11 × 11 Gaussian window, σ 1.5) and the mean CIEDE2000, "
+       << "each the mean over the views, and the worst view's.\n\n"
+       << "| technique | ratio | frame ms | image SSIM | worst | image ΔE00 | worst | refr. px median | p95 | p99 | max | > 2 px | refr. m median "
           "| refl. texels median | p99 | shown p99 | not shown | Fresnel err. median | max | caustics RMSE "
           "| coverage | surface px median | p99 | shaded > 2 cm | NaN px |\n"
-       << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+       << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
     for (const Summary& s : summaries)
         md << "| " << s.technique << " | " << fmt(s.ratioInView, 2, "×") << " | " << fmt(s.frameMs, 1) << " | "
-           << fmt(s.refractionPx.median, 3) << " | " << fmt(s.refractionPx.p95, 2) << " | " << fmt(s.refractionPx.p99, 2)
+           << fmt(s.imageSsim, 3) << " | " << fmt(s.worstImageSsim, 3) << " | " << fmt(s.imageDeltaE, 2) << " | "
+           << fmt(s.worstImageDeltaE, 2) << " | " << fmt(s.refractionPx.median, 3) << " | " << fmt(s.refractionPx.p95, 2) << " | " << fmt(s.refractionPx.p99, 2)
            << " | " << fmt(s.refractionPx.max, 1) << " | " << pct(s.refractionPx.over2) << " | "
            << fmt(s.refractionM.median, 4) << " | " << fmt(s.reflectionTexels.median, 2) << " | "
            << fmt(s.reflectionTexels.p99, 1) << " | " << fmt(s.reflectionShownTexels.p99, 1) << " | "
@@ -363,14 +380,21 @@ bool writeDocs(const std::string& dir, const RunInfo& info, const std::vector<Re
            << fmt(s.drawnSurfacePx.p99, 2) << " | " << pct(s.shadedPointCm.over2) << " | " << s.nanPixels << " |\n";
 
     md << "\n## Views (default technique)\n\n"
-       << "| view | eye | water px | frame ms | plain ms | ratio | refr. px median | p99 | max | refr. m median "
+       << "Image: over the water pixels, and in brackets over the whole frame; the target (SSIM ≥ 0.95 and mean "
+          "CIEDE2000 ≤ 2 over the water) met or missed.\n\n"
+       << "| view | eye | water px | frame ms | plain ms | ratio | image SSIM | ΔE00 mean | ΔE00 p95 | image target "
+          "| refr. px median | p99 | max | refr. m median "
           "| refl. texels median | p99 | shown p99 | not shown | Fresnel err. median | caustics RMSE | coverage "
           "| surface px median | p99 | shaded > 2 cm | NaN px |\n"
-       << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+       << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
     for (const Record& r : records) {
         if (r.technique != "default") continue;
         md << "| " << r.view << " | " << (r.eyeBelow ? "under water" : "above") << " | " << r.waterPixels << " | "
            << fmt(r.frameMs, 1) << " | " << fmt(r.plainMs, 1) << " | " << fmt(r.ratio, 2, "×") << " | "
+           << fmt(r.image.ssimWater, 3) << " (" << fmt(r.image.ssimFrame, 3) << ") | " << fmt(r.image.deltaEMeanWater, 2)
+           << " (" << fmt(r.image.deltaEMeanFrame, 2) << ") | " << fmt(r.image.deltaEP95Water, 2) << " ("
+           << fmt(r.image.deltaEP95Frame, 2) << ") | "
+           << status(r.image.deltaEMeanWater, r.image.ssimWater >= 0.95 && r.image.deltaEMeanWater <= 2.0) << " | "
            << fmt(r.refractionPx.median, 3) << " | " << fmt(r.refractionPx.p99, 2) << " | " << fmt(r.refractionPx.max, 1)
            << " | " << fmt(r.refractionM.median, 4) << " | " << fmt(r.reflectionTexels.median, 2) << " | "
            << fmt(r.reflectionTexels.p99, 1) << " | " << fmt(r.reflectionShownTexels.p99, 1) << " | "

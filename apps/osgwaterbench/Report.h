@@ -2,6 +2,7 @@
 // docs (BENCHMARKS.md with the targets, per-technique and per-view tables, and a gnuplot PNG).
 #pragma once
 #include "Ablation.h"
+#include "ImageCompare.h"
 #include "Metrics.h"
 #include <string>
 #include <vector>
@@ -21,6 +22,7 @@ struct Record {
     Quantiles shadedPointCm;  //!< the point each pixel shades against its ray's exact crossing, cm (over2: > 2 cm)
     size_t refractionCauses[CAUSE_COUNT] = {}; //!< the refraction's pixels over 2 px, by cause
     CausticsErrors causticsErrors;
+    ImageErrors image; //!< the view as shown against the reference image
 };
 
 //! Pooled over every view of one technique.
@@ -39,6 +41,11 @@ struct Summary {
     double causticsRmse = std::numeric_limits<double>::quiet_NaN(), causticsNoise = causticsRmse;
     double worstCausticsRmse = causticsRmse, worstCausticsNoise = causticsRmse; //!< the worst view's, and its reference's noise
     std::string worstCausticsView;
+    //! the image against the reference: the mean over the views of each view's water SSIM and mean
+    //! CIEDE2000, and the worst view's
+    double imageSsim = std::numeric_limits<double>::quiet_NaN(), imageDeltaE = imageSsim;
+    double worstImageSsim = imageSsim, worstImageDeltaE = imageSsim;
+    std::string worstImageView;
     size_t nanPixels = 0;
 };
 

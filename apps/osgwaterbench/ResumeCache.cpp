@@ -53,6 +53,10 @@ json toJson(const Record& r)
     j["causticsErrors"] = { { "valid", c.valid }, { "relativeRmse", number(c.relativeRmse) },
                             { "referenceNoise", number(c.referenceNoise) }, { "meanReference", number(c.meanReference) },
                             { "meanRendered", number(c.meanRendered) } };
+    const ImageErrors& e = r.image;
+    j["image"] = { { "ssimWater", number(e.ssimWater) }, { "ssimFrame", number(e.ssimFrame) },
+                   { "deltaEMeanWater", number(e.deltaEMeanWater) }, { "deltaEP95Water", number(e.deltaEP95Water) },
+                   { "deltaEMeanFrame", number(e.deltaEMeanFrame) }, { "deltaEP95Frame", number(e.deltaEP95Frame) } };
     return j;
 }
 
@@ -95,6 +99,13 @@ Record recordFrom(const json& j)
     r.causticsErrors.referenceNoise = number(c.at("referenceNoise"));
     r.causticsErrors.meanReference = number(c.at("meanReference"));
     r.causticsErrors.meanRendered = number(c.at("meanRendered"));
+    const json& e = j.at("image");
+    r.image.ssimWater = number(e.at("ssimWater"));
+    r.image.ssimFrame = number(e.at("ssimFrame"));
+    r.image.deltaEMeanWater = number(e.at("deltaEMeanWater"));
+    r.image.deltaEP95Water = number(e.at("deltaEP95Water"));
+    r.image.deltaEMeanFrame = number(e.at("deltaEMeanFrame"));
+    r.image.deltaEP95Frame = number(e.at("deltaEP95Frame"));
     return r;
 }
 
@@ -110,7 +121,9 @@ json toJson(const Summary& s)
              { "coverageMismatchShare", number(s.coverageMismatchShare) }, { "causticsRmse", number(s.causticsRmse) },
              { "causticsNoise", number(s.causticsNoise) }, { "worstCausticsRmse", number(s.worstCausticsRmse) },
              { "worstCausticsNoise", number(s.worstCausticsNoise) }, { "worstCausticsView", s.worstCausticsView },
-             { "nanPixels", s.nanPixels } };
+             { "imageSsim", number(s.imageSsim) }, { "imageDeltaE", number(s.imageDeltaE) },
+             { "worstImageSsim", number(s.worstImageSsim) }, { "worstImageDeltaE", number(s.worstImageDeltaE) },
+             { "worstImageView", s.worstImageView }, { "nanPixels", s.nanPixels } };
 }
 
 Summary summaryFrom(const json& j)
@@ -135,6 +148,11 @@ Summary summaryFrom(const json& j)
     s.worstCausticsRmse = number(j.at("worstCausticsRmse"));
     s.worstCausticsNoise = number(j.at("worstCausticsNoise"));
     s.worstCausticsView = j.at("worstCausticsView");
+    s.imageSsim = number(j.at("imageSsim"));
+    s.imageDeltaE = number(j.at("imageDeltaE"));
+    s.worstImageSsim = number(j.at("worstImageSsim"));
+    s.worstImageDeltaE = number(j.at("worstImageDeltaE"));
+    s.worstImageView = j.at("worstImageView");
     s.nanPixels = j.at("nanPixels");
     return s;
 }

@@ -9,6 +9,7 @@
 #include "BenchOptions.h"
 #include "ResumeCache.h"
 #include "Probe.h"
+#include "ReferenceRenderer.h"
 #include "Report.h"
 #include "Techniques.h"
 #include "Views.h"
@@ -18,6 +19,7 @@
 #include "frame/SceneLighting.h"
 #include <osgDB/FileUtils>
 #include <osgDB/ReadFile>
+#include <osgDB/WriteFile>
 #include <osg/GL>
 #include <osg/Switch>
 #include <osg/Timer>
@@ -36,6 +38,18 @@
 using namespace bench;
 
 namespace {
+
+// A view's name as a file name: its letters and digits, a hyphen for each run of anything else
+std::string fileName(const std::string& view)
+{
+    std::string f;
+    for (char c : view) {
+        if (std::isalnum(static_cast<unsigned char>(c))) f += char(std::tolower(static_cast<unsigned char>(c)));
+        else if (!f.empty() && f.back() != '-') f += '-';
+    }
+    while (!f.empty() && f.back() == '-') f.pop_back();
+    return f.empty() ? "view" : f;
+}
 
 // frame times are means over blocks of this many frames (then the median over blocks)
 const size_t kTimingBlock = 5;
@@ -72,7 +86,7 @@ Summary summarize(const std::string& name, const std::vector<Record>& records, s
 {
     Summary s;
     s.technique = name;
-    std::vector<double> ratios, frames, caustics, noise;
+    std::vector<double> ratios, frames, caustics, noise, ssims, deltaEs;
     std::vector<float> px, m, refl, reflShown, fres, drawn, shaded;
     size_t notShown = 0, coverageMismatch = 0, waterPixels = 0;
     for (size_t i = 0; i < records.size(); ++i) {
@@ -89,6 +103,15 @@ Summary summarize(const std::string& name, const std::vector<Record>& records, s
                 s.worstCausticsRmse = r.causticsErrors.relativeRmse;
                 s.worstCausticsNoise = r.causticsErrors.referenceNoise;
                 s.worstCausticsView = r.view;
+            }
+        }
+        if (std::isfinite(r.image.ssimWater) && std::isfinite(r.image.deltaEMeanWater)) {
+            ssims.push_back(r.image.ssimWater);
+            deltaEs.push_back(r.image.deltaEMeanWater);
+            if (!(r.image.ssimWater >= s.worstImageSsim)) s.worstImageSsim = r.image.ssimWater;
+            if (!(r.image.deltaEMeanWater <= s.worstImageDeltaE)) {
+                s.worstImageDeltaE = r.image.deltaEMeanWater;
+                s.worstImageView = r.view;
             }
         }
         s.nanPixels += r.nanPixels;
@@ -117,6 +140,13 @@ Summary summarize(const std::string& name, const std::vector<Record>& records, s
         s.causticsRmse = osgWaterApps::median(caustics);
         s.causticsNoise = osgWaterApps::median(noise);
     }
+    auto mean = [](const std::vector<double>& v) {
+        double sum = 0.0;
+        for (double x : v) sum += x;
+        return v.empty() ? std::numeric_limits<double>::quiet_NaN() : sum / double(v.size());
+    };
+    s.imageSsim = mean(ssims);
+    s.imageDeltaE = mean(deltaEs);
     s.refractionPx = quantiles(px);
     s.refractionM = quantiles(m);
     s.reflectionTexels = quantiles(refl);
@@ -261,8 +291,17 @@ int main(int argc, char** argv)
         if (o.ablationOnly) return 0;
     }
     const Media media{ base->getAirIOR(), base->getWaterIOR() };
-    const RayCaster sceneCaster(collectScene(*water));
+    SceneShading sceneShading;
+    const RayCaster sceneCaster(collectScene(*water, &sceneShading));
     std::cout << "reference: " << sceneCaster.size() << " scene triangles" << std::endl;
+    // the reference image's light and sky: the scene's own settings (no technique changes them)
+    const ImageSetup imageLight = imageSetup(*water, timing.getCamera()->getClearColor());
+    std::map<std::pair<size_t, int>, std::vector<glm::vec3>> referenceImages; // (view, model) -> linear light
+    const std::string tripletDir = o.out + "/triplets";
+    if (!osgDB::makeDirectory(tripletDir)) {
+        std::cerr << "error: cannot create the folder " << tripletDir << std::endl;
+        return 2;
+    }
     std::map<double, std::unique_ptr<WaterCaster>> waterCasters;
     // the references of each wave model's surface: (view, model) -> reference image, and
     // (time, caustics resolution, model) -> caustics
@@ -334,6 +373,12 @@ int main(int argc, char** argv)
             if (traced.pixels.empty())
                 traced = traceView(reference, probe.camera()->getViewMatrix(), probe.camera()->getProjectionMatrix(), o.width,
                                    o.height);
+            std::vector<glm::vec3>& referenceImage = referenceImages[{ vi, model }];
+            if (referenceImage.empty()) {
+                const ReferenceRenderer renderer(reference, sceneShading, imageLight);
+                referenceImage = renderer.render(probe.camera()->getViewMatrix(), probe.camera()->getProjectionMatrix(),
+                                                 o.width, o.height);
+            }
             const double captureAndTraceS = osg::Timer::instance()->delta_s(phase, osg::Timer::instance()->tick());
             r.eyeBelow = reference.eyeBelow(glm::dvec3(v.eye.x(), v.eye.y(), v.eye.z()));
             ViewErrors ve = measureView(traced, e, sceneCaster);
@@ -343,6 +388,18 @@ int main(int argc, char** argv)
             r.tirMismatch = ve.tirMismatch;
             r.coverageMismatch = ve.coverageMismatch;
             r.nanPixels = ve.nanPixels;
+            if (e.color.valid()) {
+                const DisplayTransform display{ s->getExposure(), s->getToneCurve() };
+                std::vector<bool> waterMask(traced.pixels.size());
+                for (size_t i = 0; i < traced.pixels.size(); ++i) waterMask[i] = traced.pixels[i].flags & PixelRef::WATER;
+                r.image = compareWithReference(*e.color, referenceImage, display, waterMask);
+                if (tech.name == "default") {
+                    const osg::ref_ptr<osg::Image> side = triplet(*e.color, referenceImage, display);
+                    osgDB::writeImageFile(*side, tripletDir + "/" + fileName(v.name) + ".png");
+                    if (vi == 0 && !o.docs.empty() && osgDB::makeDirectory(o.docs))
+                        osgDB::writeImageFile(*side, o.docs + "/benchmark-reference.png");
+                }
+            }
             {
                 std::vector<float> a = ve.refractionPx, b = ve.refractionM, c = ve.reflectionTexels, d = ve.fresnel,
                                    c2 = ve.reflectionShownTexels;
