@@ -457,3 +457,36 @@ TEST(ReferenceRenderer, ASkyIsTheLightOfRaysThatMeetNothing)
     EXPECT_LT(glm::length(got - glm::dvec3(expected.x(), expected.y(), expected.z())), 1e-7);
     EXPECT_GT(glm::length(got - linear(kClear)), 0.01);
 }
+
+// A pixel's light is the mean over its area: straight down onto a checkerboard of white and black
+// (emissive, nearest texels) parallel to the image, each pixel exactly two cells wide and its
+// edges on the cells' edges, 4 x 4 rays a pixel give every pixel one half to 1e-9; the pixel
+// centres alone sit on the cells' corners and give black or white (the reference aliased, as one
+// ray a pixel is)
+TEST(ReferenceRenderer, APixelsLightIsTheMeanOverItsArea)
+{
+    const int w = 64, h = 48;
+    const double height = 10.0, fovy = 30.0, aspect = double(w) / h;
+    const double halfHeight = height * std::tan(osg::DegreesToRadians(fovy / 2.0)); // at the board
+    const float cell = float(halfHeight / h); // a pixel: two cells each way
+    osg::ref_ptr<osgWater::WaterNode> water = new osgWater::WaterNode;
+    water->getSurface()->setLevel(-100.0); // far below the board, out of sight
+    water->getSurface()->setSize(1.0f);
+    water->addChild(checkerPlane(0.0f, 4.0f * float(halfHeight * aspect), cell));
+    ImageSetup setup = imageSetup(*water, kClear);
+    ReferenceScene rs(*water, setup);
+    const osg::Matrixd view = osg::Matrixd::lookAt(osg::Vec3d(0, 0, height), osg::Vec3d(0, 0, 0), osg::Vec3d(0, 1, 0));
+    const osg::Matrixd proj = osg::Matrixd::perspective(fovy, aspect, 0.1, 100.0);
+    setup.samplesPerAxis = 4;
+    const std::vector<glm::vec3> smooth = ReferenceRenderer(*rs.ref, rs.shading, setup).render(view, proj, w, h);
+    setup.samplesPerAxis = 1;
+    const std::vector<glm::vec3> centres = ReferenceRenderer(*rs.ref, rs.shading, setup).render(view, proj, w, h);
+    double worst = 0.0, centreDeviation = 0.0;
+    for (size_t i = 0; i < smooth.size(); ++i) {
+        for (int k = 0; k < 3; ++k) worst = std::max(worst, std::fabs(double(smooth[i][k]) - 0.5));
+        centreDeviation += std::fabs(double(centres[i].x) - 0.5) / double(centres.size());
+    }
+    std::cout << "4 x 4 rays: worst " << worst << " from a half; one ray: " << centreDeviation << " on average\n";
+    EXPECT_LT(worst, 1e-6); // single-precision image
+    EXPECT_GT(centreDeviation, 0.4);
+}

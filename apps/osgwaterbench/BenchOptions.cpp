@@ -11,7 +11,7 @@ namespace {
 
 const char* kUsage =
     "usage: osgwaterbench --scene FILE --views FILE [--size WxH] [--out DIR] [--techniques LIST]\n"
-    "                     [--docs DIR] [--frames N] [--photons N] [--quick]\n"
+    "                     [--docs DIR] [--frames N] [--photons N] [--reference-samples N] [--quick]\n"
     "                     [--ablation-rounds N] [--ablation-only] [--resume KEY]\n"
     "       osgwaterbench --fresnel-figure DIR\n"
     "  --scene FILE       .osgt/.osgb with an osgWater::WaterNode, or any model (water added at z = 0)\n"
@@ -22,6 +22,7 @@ const char* kUsage =
     "  --docs DIR         also regenerate DIR/BENCHMARKS.md and DIR/benchmark-speed-error.png\n"
     "  --frames N         timed frames per technique and view (default 30, at least 30)\n"
     "  --photons N        photons of the caustics reference (default 4000000)\n"
+    "  --reference-samples N  the reference image's rays a pixel: N x N (default 2, 1..8)\n"
     "  --ablation-rounds N  alternating rounds of the ablation table (default 3, 0: none)\n"
     "  --ablation-only    the ablation table alone (timing; no techniques, no reference)\n"
     "  --resume KEY       keep each finished technique and the ablation under OUT/resume, and take\n"
@@ -89,6 +90,13 @@ bool BenchOptions::read(int argc, char** argv, std::string& error)
             if (!number(v.c_str(), x) || x < 1 || x > 1e10) { error = "--photons " + v + ": expected 1..1e10"; return false; }
             photons = size_t(x);
             photonsGiven = true;
+        } else if (a == "--reference-samples") {
+            if (!value(v)) return false;
+            if (!number(v.c_str(), x) || x < 1 || x > 8 || x != std::floor(x)) {
+                error = "--reference-samples " + v + ": expected a whole number 1..8";
+                return false;
+            }
+            referenceSamples = int(x);
         } else {
             error = "unknown option " + a + "\n" + kUsage;
             return false;

@@ -111,14 +111,15 @@ bool pseudoInverse(const glm::dvec3& jx, const glm::dvec3& jy, glm::mat2x3& out)
 }
 
 void forEachPixelRay(const osg::Matrixd& viewMatrix, const osg::Matrixd& projection, int width, int height,
-                     const std::function<void(int, int, const glm::dvec3&, const glm::dvec3&)>& pixel)
+                     const std::function<void(int, int, const glm::dvec3&, const glm::dvec3&)>& pixel,
+                     const glm::dvec2& offset)
 {
     const osg::Matrixd inv = osg::Matrixd::inverse(viewMatrix * projection);
     const glm::dvec3 eye = toGlm(osg::Matrixd::inverse(viewMatrix).getTrans());
     auto rows = [&](int y0, int y1) {
         for (int y = y0; y < y1; ++y)
             for (int x = 0; x < width; ++x) {
-                const double nx = (x + 0.5) / width * 2.0 - 1.0, ny = (y + 0.5) / height * 2.0 - 1.0;
+                const double nx = (x + offset.x) / width * 2.0 - 1.0, ny = (y + offset.y) / height * 2.0 - 1.0;
                 const glm::dvec3 dir = glm::normalize(toGlm(osg::Vec3d(nx, ny, 1.0) * inv) - toGlm(osg::Vec3d(nx, ny, -1.0) * inv));
                 pixel(x, y, eye, dir);
             }

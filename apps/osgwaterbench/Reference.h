@@ -6,6 +6,7 @@
 #include "WaterCaster.h"
 #include <osg/Matrixd>
 #include <glm/mat2x3.hpp>
+#include <glm/vec2.hpp>
 #include <cstdint>
 #include <functional>
 
@@ -82,10 +83,12 @@ struct ReferenceImage {
     const PixelRef& at(int x, int y) const { return pixels[size_t(y) * width + x]; }
 };
 
-//! Calls `pixel(x, y, eye, dir)` for every pixel centre of a width x height view (row 0 at the
-//! bottom), from a few threads, each with its own rows: the unit ray through it, local frame.
+//! Calls `pixel(x, y, eye, dir)` for every pixel of a width x height view (row 0 at the bottom),
+//! from a few threads, each with its own rows: the unit ray through the pixel's point `offset`
+//! (0..1 across it; the centre by default), local frame.
 void forEachPixelRay(const osg::Matrixd& viewMatrix, const osg::Matrixd& projection, int width, int height,
-                     const std::function<void(int, int, const glm::dvec3&, const glm::dvec3&)>& pixel);
+                     const std::function<void(int, int, const glm::dvec3&, const glm::dvec3&)>& pixel,
+                     const glm::dvec2& offset = glm::dvec2(0.5));
 
 //! Traces every pixel centre of a width x height view (viewMatrix, projection: local frame -> clip).
 ReferenceImage traceView(const Reference& ref, const osg::Matrixd& viewMatrix, const osg::Matrixd& projection,

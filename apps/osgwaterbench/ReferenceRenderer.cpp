@@ -3,6 +3,7 @@
 #include <osgWater/Sky>
 #include <osgWater/WaterNode>
 #include <glm/geometric.hpp>
+#include <algorithm>
 #include <cmath>
 
 namespace bench {
@@ -81,10 +82,17 @@ glm::dvec3 ReferenceRenderer::follow(const glm::dvec3& org, const glm::dvec3& di
 std::vector<glm::vec3> ReferenceRenderer::render(const osg::Matrixd& viewMatrix, const osg::Matrixd& projection,
                                                   int width, int height) const
 {
-    std::vector<glm::vec3> image(size_t(width) * height);
-    forEachPixelRay(viewMatrix, projection, width, height, [&](int x, int y, const glm::dvec3& eye, const glm::dvec3& dir) {
-        image[size_t(y) * width + x] = glm::vec3(radiance(eye, dir, _ref.eyeBelow(eye)));
-    });
+    const int n = std::max(1, _setup.samplesPerAxis);
+    std::vector<glm::dvec3> sum(size_t(width) * height, glm::dvec3(0.0));
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i)
+            forEachPixelRay(viewMatrix, projection, width, height,
+                            [&](int x, int y, const glm::dvec3& eye, const glm::dvec3& dir) {
+                                sum[size_t(y) * width + x] += radiance(eye, dir, _ref.eyeBelow(eye));
+                            },
+                            glm::dvec2((i + 0.5) / n, (j + 0.5) / n));
+    std::vector<glm::vec3> image(sum.size());
+    for (size_t k = 0; k < sum.size(); ++k) image[k] = glm::vec3(sum[k] / double(n * n));
     return image;
 }
 

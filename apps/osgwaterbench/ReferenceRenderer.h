@@ -30,6 +30,7 @@ struct ImageSetup {
     glm::dvec3 extinction{ 0.0 }; //!< per metre, per channel (WaterSettings::getViewExtinction)
     std::function<glm::dvec3(const glm::dvec3&)> sky; //!< linear light along a ray in the air that meets nothing
     int maxWaterHits = 8;         //!< water meetings followed per path
+    int samplesPerAxis = 1;       //!< a pixel's light: the mean over n x n rays through a grid's cell centres
 };
 
 //! The setup of a water node's scene: its sun, ambient and water, and its sky (an osgWater::Sky
@@ -43,8 +44,9 @@ public:
     ReferenceRenderer(const Reference& ref, const SceneShading& shading, ImageSetup setup);
     //! The linear light arriving at `org` along unit `dir`, the ray starting in the water or not.
     glm::dvec3 radiance(const glm::dvec3& org, const glm::dvec3& dir, bool inWater) const;
-    //! Every pixel centre of a view (row 0 at the bottom), linear light (single precision: a view's
-    //! worth is kept per view for every technique); the eye's medium from the wave at its place.
+    //! Every pixel of a view (row 0 at the bottom): the mean light of samplesPerAxis^2 rays through it,
+    //! linear (single precision: a view's worth is kept per view for every technique); the eye's
+    //! medium from the wave at its place.
     std::vector<glm::vec3> render(const osg::Matrixd& viewMatrix, const osg::Matrixd& projection, int width,
                                    int height) const;
 

@@ -53,6 +53,7 @@ struct RunInfo {
     std::string command, scene, viewsFile, renderer, date;
     int width = 0, height = 0, frames = 0;
     size_t photons = 0;
+    int referenceSamples = 1; //!< the reference image's rays a pixel, each way
     unsigned int cpus = 0;
     bool quick = false;
     double heightQueriesPerSecond = 0.0; //!< WaterNode::getSurfaceHeightAt with the normal, one thread

@@ -195,7 +195,8 @@ ResumeCache::ResumeCache(const std::string& dir, const std::string& sourceKey, c
     if (sourceKey.empty()) return;
     _key = sourceKey + " scene " + o.scene + " views " + o.viewsFile + " size " + std::to_string(o.width) + "x" +
            std::to_string(o.height) + " frames " + std::to_string(o.frames) + " photons " + std::to_string(o.photons) +
-           " ablation rounds " + std::to_string(o.ablationRounds) + (o.quick ? " quick" : "");
+           " reference samples " + std::to_string(o.referenceSamples) + " ablation rounds " + std::to_string(o.ablationRounds) +
+           (o.quick ? " quick" : "");
 }
 
 std::string ResumeCache::file(const std::string& name) const { return _dir + "/" + name + ".json"; }

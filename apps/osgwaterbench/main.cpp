@@ -254,6 +254,7 @@ int main(int argc, char** argv)
     info.height = o.height;
     info.frames = o.frames;
     info.photons = o.photons;
+    info.referenceSamples = o.referenceSamples;
     info.quick = o.quick;
     info.date = osgWaterApps::today();
     info.cpus = std::thread::hardware_concurrency();
@@ -295,7 +296,8 @@ int main(int argc, char** argv)
     const RayCaster sceneCaster(collectScene(*water, &sceneShading));
     std::cout << "reference: " << sceneCaster.size() << " scene triangles" << std::endl;
     // the reference image's light and sky: the scene's own settings (no technique changes them)
-    const ImageSetup imageLight = imageSetup(*water, timing.getCamera()->getClearColor());
+    ImageSetup imageLight = imageSetup(*water, timing.getCamera()->getClearColor());
+    imageLight.samplesPerAxis = o.referenceSamples;
     std::map<std::pair<size_t, int>, std::vector<glm::vec3>> referenceImages; // (view, model) -> linear light
     const std::string tripletDir = o.out + "/triplets";
     if (!osgDB::makeDirectory(tripletDir)) {
