@@ -58,7 +58,8 @@ void meanAndP95(std::vector<double> v, double& mean, double& p95)
 }
 
 ImageErrors compareWithReference(const osg::Image& shown, const std::vector<glm::vec3>& reference,
-                                 const DisplayTransform& display, const std::vector<bool>& water)
+                                 const DisplayTransform& display, const std::vector<bool>& water,
+                                 osg::ref_ptr<osg::Image>* triplet)
 {
     ImageErrors e;
     const DisplayPair p(shown, reference, display);
@@ -76,31 +77,27 @@ ImageErrors compareWithReference(const osg::Image& shown, const std::vector<glm:
         a.value[i] = luma(p.shown[i]);
         b.value[i] = luma(p.reference[i]);
     }
-    meanAndP95(all, e.deltaEMeanFrame, e.deltaEP95Frame);
-    meanAndP95(inWater, e.deltaEMeanWater, e.deltaEP95Water);
+    if (triplet) {
+        osg::ref_ptr<osg::Image> out = new osg::Image;
+        out->allocateImage(3 * p.width, p.height, 1, GL_RGB, GL_UNSIGNED_BYTE);
+        auto put = [&](int x, int y, const glm::vec3& c) {
+            unsigned char* d = out->data(unsigned(x), unsigned(y));
+            for (int k = 0; k < 3; ++k) d[k] = (unsigned char)std::lround(255.0f * std::min(std::max(c[k], 0.0f), 1.0f));
+        };
+        for (int y = 0; y < p.height; ++y)
+            for (int x = 0; x < p.width; ++x) {
+                const size_t i = size_t(y) * p.width + x;
+                put(x, y, p.shown[i]);
+                put(p.width + x, y, p.reference[i]);
+                put(2 * p.width + x, y, glm::vec3(float(std::min(all[i] / 10.0, 1.0))));
+            }
+        *triplet = out;
+    }
+    meanAndP95(std::move(all), e.deltaEMeanFrame, e.deltaEP95Frame);
+    meanAndP95(std::move(inWater), e.deltaEMeanWater, e.deltaEP95Water);
     e.ssimFrame = ssim(a, b);
-    if (!inWater.empty()) e.ssimWater = ssim(a, b, &water);
+    if (std::isfinite(e.deltaEMeanWater)) e.ssimWater = ssim(a, b, &water); // some water to measure
     return e;
-}
-
-osg::ref_ptr<osg::Image> triplet(const osg::Image& shown, const std::vector<glm::vec3>& reference,
-                                 const DisplayTransform& display)
-{
-    const DisplayPair p(shown, reference, display);
-    osg::ref_ptr<osg::Image> out = new osg::Image;
-    out->allocateImage(3 * p.width, p.height, 1, GL_RGB, GL_UNSIGNED_BYTE);
-    auto put = [&](int x, int y, const glm::vec3& c) {
-        unsigned char* d = out->data(unsigned(x), unsigned(y));
-        for (int k = 0; k < 3; ++k) d[k] = (unsigned char)std::lround(255.0f * std::min(std::max(c[k], 0.0f), 1.0f));
-    };
-    for (int y = 0; y < p.height; ++y)
-        for (int x = 0; x < p.width; ++x) {
-            const size_t i = size_t(y) * p.width + x;
-            put(x, y, p.shown[i]);
-            put(p.width + x, y, p.reference[i]);
-            put(2 * p.width + x, y, glm::vec3(float(std::min(deltaE(p.shown[i], p.reference[i]) / 10.0, 1.0))));
-        }
-    return out;
 }
 
 }

@@ -27,13 +27,11 @@ struct DisplayTransform {
 //! `shown`: the render as the display holds it (float RGBA, display values, row 0 at the bottom);
 //! `reference`: linear light per pixel, the same size; `water`: the pixels whose reference ray
 //! meets the water first. NaN figures where there is nothing to measure (no water pixel, or the
-//! images too small for SSIM's window).
+//! images too small for SSIM's window). With `triplet`, also the render, the reference (as the
+//! display shows it) and the CIEDE2000 difference (black 0, white 10 or more) side by side: an
+//! 8-bit RGB image three views wide.
 ImageErrors compareWithReference(const osg::Image& shown, const std::vector<glm::vec3>& reference,
-                                 const DisplayTransform& display, const std::vector<bool>& water);
-
-//! The render, the reference (as the display shows it) and the CIEDE2000 difference (black 0,
-//! white 10 or more) side by side: an 8-bit RGB image three views wide.
-osg::ref_ptr<osg::Image> triplet(const osg::Image& shown, const std::vector<glm::vec3>& reference,
-                                 const DisplayTransform& display);
+                                 const DisplayTransform& display, const std::vector<bool>& water,
+                                 osg::ref_ptr<osg::Image>* triplet = nullptr);
 
 }

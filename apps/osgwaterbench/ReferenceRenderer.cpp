@@ -83,12 +83,14 @@ std::vector<glm::vec3> ReferenceRenderer::render(const osg::Matrixd& viewMatrix,
                                                   int width, int height) const
 {
     const int n = std::max(1, _setup.samplesPerAxis);
+    const osg::Vec3d eyePoint = osg::Matrixd::inverse(viewMatrix).getTrans();
+    const bool eyeBelow = _ref.eyeBelow(glm::dvec3(eyePoint.x(), eyePoint.y(), eyePoint.z())); // one eye for every ray
     std::vector<glm::dvec3> sum(size_t(width) * height, glm::dvec3(0.0));
     for (int j = 0; j < n; ++j)
         for (int i = 0; i < n; ++i)
             forEachPixelRay(viewMatrix, projection, width, height,
                             [&](int x, int y, const glm::dvec3& eye, const glm::dvec3& dir) {
-                                sum[size_t(y) * width + x] += radiance(eye, dir, _ref.eyeBelow(eye));
+                                sum[size_t(y) * width + x] += radiance(eye, dir, eyeBelow);
                             },
                             glm::dvec2((i + 0.5) / n, (j + 0.5) / n));
     std::vector<glm::vec3> image(sum.size());

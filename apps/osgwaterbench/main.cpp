@@ -394,9 +394,10 @@ int main(int argc, char** argv)
                 const DisplayTransform display{ s->getExposure(), s->getToneCurve() };
                 std::vector<bool> waterMask(traced.pixels.size());
                 for (size_t i = 0; i < traced.pixels.size(); ++i) waterMask[i] = traced.pixels[i].flags & PixelRef::WATER;
-                r.image = compareWithReference(*e.color, referenceImage, display, waterMask);
-                if (tech.name == "default") {
-                    const osg::ref_ptr<osg::Image> side = triplet(*e.color, referenceImage, display);
+                osg::ref_ptr<osg::Image> side;
+                r.image = compareWithReference(*e.color, referenceImage, display, waterMask,
+                                               tech.name == "default" ? &side : nullptr);
+                if (side.valid()) {
                     osgDB::writeImageFile(*side, tripletDir + "/" + fileName(v.name) + ".png");
                     if (vi == 0 && !o.docs.empty() && osgDB::makeDirectory(o.docs))
                         osgDB::writeImageFile(*side, o.docs + "/benchmark-reference.png");
