@@ -1,14 +1,15 @@
 // osgwatergenlake: writes the demo lake as Wavefront OBJ + MTL + PNG textures, deterministically
 // (same files on every run and machine). Sized like the thesis's scene (~131k vertices, ~85k faces):
 // a basin with a deep centre and sloping shore, textured bed (sand, rock, weeds), grassy shore,
-// rocks, trees above the water, a submerged crate, a post and a pier crossing the surface, a sky dome.
+// rocks, trees above the water, a submerged crate, a post and a pier crossing the surface; a sky dome
+// in its own file for scenes that want one (lake.osgt itself has the kit's clear sky, osgWater::Sky).
 #include "LakeModel.h"
 #include "ObjWriter.h"
+#include <osgWater/Sky>
 #include <osgWater/WaterNode>
 #include <osg/ArgumentParser>
 #include <osg/Image>
 #include <osg/ProxyNode>
-#include <osg/CullFace>
 #include <osgDB/FileUtils>
 #include <osgDB/WriteFile>
 #include <cmath>
@@ -273,8 +274,8 @@ bool writeObj(const std::string& dir, int grid, int grassBlades, int weedBlades,
     blades(thin, "weeds", "weed", weedBlades, -4.5f, -0.6f, 0.3f, 1.1f, 202);
     nv += thin.vertices();
     nf += thin.faces();
-    // the sky in its own file: lake.osgt culls its back faces, so from outside (osgviewer's home
-    // view) it does not hide the lake
+    // the dome in its own file, not in lake.osgt (the clear sky is): a scene that adds it culls its
+    // back faces, so that from outside (osgviewer's home view) it does not hide the lake
     ObjWriter sky(dir + "/sky.obj", "lake.mtl");
     if (!sky.ok()) return false;
     skyDome(sky, 110.0f);
@@ -316,10 +317,10 @@ bool writeOsgt(const std::string& path)
     blades->setLoadingExternalReferenceMode(osg::ProxyNode::LOAD_IMMEDIATELY);
     blades->getOrCreateStateSet()->setMode(GL_CULL_FACE, osg::StateAttribute::OFF); // both sides, in every pass
     water->addChild(blades.get());
-    osg::ref_ptr<osg::ProxyNode> sky = new osg::ProxyNode;
-    sky->setFileName(0, "lake/sky.obj");
-    sky->setLoadingExternalReferenceMode(osg::ProxyNode::LOAD_IMMEDIATELY);
-    sky->getOrCreateStateSet()->setAttributeAndModes(new osg::CullFace(osg::CullFace::BACK), osg::StateAttribute::ON);
+    // the clear sky, lit by the water's sun: the passes draw it, the water reflects it, and the
+    // benchmark's reference takes it as the light of rays that meet nothing
+    osg::ref_ptr<osgWater::Sky> sky = new osgWater::Sky;
+    sky->setSunDirection(water->getSettings()->getSunDirection());
     water->addChild(sky.get());
     return osgDB::writeNodeFile(*water, path);
 }

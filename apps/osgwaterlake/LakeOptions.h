@@ -16,7 +16,7 @@ struct LakeOptions {
     double time = 10.0;            // simulation time of the first frame
     double causticsTile = 0.0;     // tileable caustics: the tile's side, the waves snapped to it (0: off)
     bool calm = false;             // the scene's waves off
-    bool sky = true;               // Preetham's clear sky (osgWater::Sky) in place of the scene's dome, from the water's sun
+    bool dome = false;             // the lake's sky dome (data/lake/sky.obj) in place of the scene's clear sky
     double wind = -1.0;            // m/s: the wind's speed, and its waves drawn (< 0: the scene's)
     double choppiness = -1.0;      // the wind's waves' choppiness, 0..1 (< 0: the scene's)
     std::string waves;             // the wave model (wind|sum), "" for the scene's
@@ -35,7 +35,8 @@ struct LakeOptions {
     static void describe(osg::ApplicationUsage& usage);
     //! Reads the options; false (with a message) on an error.
     bool read(osg::ArgumentParser& args);
-    //! Applies the water options given on the command line to a WaterNode's settings.
+    //! Applies the water options given on the command line to a WaterNode's settings (and its
+    //! skies: lit by its sun, or the dome in their place).
     void apply(osgWater::WaterNode& water) const;
 
 private:
