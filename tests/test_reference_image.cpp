@@ -3,6 +3,7 @@
 #include "GLHarness.h"
 #include "RayCaster.h"
 #include "Reference.h"
+#include "ReferenceCaustics.h"
 #include "ReferenceRenderer.h"
 #include "WaterCaster.h"
 #include "SceneShading.h"
@@ -543,4 +544,76 @@ TEST(ReferenceRenderer, TheReflectionPassesSkyIsTheReferencesSky)
     EXPECT_LT(worst[0], 2.0 / 255.0);
     EXPECT_LT(worst[1], 2.0 / 255.0);
     EXPECT_LT(worst[2], 4.0 / 255.0);
+}
+
+// The direct sun under the water, as the reference takes it from the photons: over a sun's window
+// 20 m square (4 x 4 texels of distinct values), a bed 2 m down and a 20 cm plate 1 m above part of
+// it, the sun 32 degrees from the zenith:
+// - above the level, and outside the window, all of the sun (the scene program reads no caustics);
+// - at a texel's centre its value, halfway between two centres their mean (GL_LINEAR), times the
+//   intensity and each channel's extra fading over the depth, exp(-c 2 m), to 1e-12;
+// - under the plate along the sun's path refracted into the water (Snell: 0.43 m aside per metre of
+//   rise) none, though the straight sun ray (0.63 m a metre) would pass beside the plate;
+// - the scene program's colour of the bed there: the sun's diffuse term times that share.
+TEST(ReferenceCaustics, TheSunUnderTheWaterIsThePhotonsTexelsAlongTheRefractedPath)
+{
+    TriangleMesh mesh;
+    const double bed = -2.0;
+    mesh.add(glm::dvec3(-30, -30, bed), glm::dvec3(30, -30, bed), glm::dvec3(30, 30, bed));
+    mesh.add(glm::dvec3(-30, -30, bed), glm::dvec3(30, 30, bed), glm::dvec3(-30, 30, bed));
+    const glm::dvec3 P(1.25, -1.25, bed); // under the plate: its refracted path rises through it
+    const double x0 = P.x + 0.33, x1 = P.x + 0.53, pz = -1.0;
+    mesh.add(glm::dvec3(x0, P.y - 0.5, pz), glm::dvec3(x1, P.y - 0.5, pz), glm::dvec3(x1, P.y + 0.5, pz));
+    mesh.add(glm::dvec3(x0, P.y - 0.5, pz), glm::dvec3(x1, P.y + 0.5, pz), glm::dvec3(x0, P.y + 0.5, pz));
+    const RayCaster scene(mesh);
+
+    PhotonImage photons;
+    photons.resolution = 4;
+    for (int k = 0; k < 16; ++k) photons.value.push_back(0.5f + 0.25f * float(k));
+    UnderwaterSun sun;
+    sun.photons = &photons;
+    sun.localToSun = osg::Matrixd::translate(10.0, 10.0, 0.0) * osg::Matrixd::scale(0.05, 0.05, 1.0); // [-10, 10]^2 -> [0, 1]^2
+    sun.intensity = 1.5;
+    sun.channelExtinction = glm::dvec3(0.3, 0.0, -0.05);
+    sun.level = 0.0;
+    sun.towardsSun = glm::normalize(glm::dvec3(0.5, 0.0, 0.8));
+    sun.airIOR = 1.0;
+    sun.waterIOR = 1.333;
+    const auto share = underwaterSunShare(sun, scene);
+    auto expectedAt = [&](double value) {
+        return sun.intensity * value *
+               glm::dvec3(std::exp(-0.3 * 2.0), 1.0, std::exp(0.05 * 2.0));
+    };
+    EXPECT_EQ(share(glm::dvec3(1.0, 1.0, 0.5)), glm::dvec3(1.0)) << "above the level";
+    EXPECT_EQ(share(glm::dvec3(15.0, 1.0, bed)), glm::dvec3(1.0)) << "outside the window";
+    // texel (1, 2)'s centre: x = -10 + 1.5 * 5, y = -10 + 2.5 * 5
+    const glm::dvec3 centre(-2.5, 2.5, bed), between(0.0, 2.5, bed);
+    EXPECT_LT(glm::length(share(centre) - expectedAt(photons.value[2 * 4 + 1])), 1e-12);
+    EXPECT_LT(glm::length(share(between) - expectedAt(0.5 * (photons.value[2 * 4 + 1] + photons.value[2 * 4 + 2]))), 1e-12);
+    // under the plate: the refracted path meets it, the straight one passes beside it
+    const glm::dvec3 straight = sun.towardsSun * ((pz - bed) / sun.towardsSun.z);
+    ASSERT_GT(P.x + straight.x, x1) << "the straight ray passes beside the plate";
+    EXPECT_EQ(share(P), glm::dvec3(0.0)) << "in the plate's shadow";
+    EXPECT_GT(share(P + glm::dvec3(0.0, 1.0, 0.0)).y, 0.5) << "beside the plate's shadow";
+
+    // the scene program's colour there: emission + ambient + diffuse sun times the share
+    SceneShading shading;
+    shading.looks.resize(1);
+    shading.looks[0].emission = glm::dvec3(0.0);
+    shading.looks[0].ambient = glm::dvec3(0.2);
+    shading.looks[0].diffuse = glm::dvec3(0.5, 0.6, 0.7);
+    shading.triangles.resize(mesh.triangles.size());
+    SceneLight light;
+    light.towardsSun = sun.towardsSun;
+    light.sunColor = glm::dvec3(1.0, 0.9, 0.8);
+    light.ambient = glm::dvec3(0.25);
+    light.sunShare = share;
+    const glm::dvec3 down(0.0, 0.0, -1.0);
+    const Hit atCentre = scene.intersect(centre + glm::dvec3(0.0, 0.0, 1.0), down);
+    ASSERT_TRUE(atCentre.hit);
+    const glm::dvec3 unlit = 0.2 * light.ambient, sunTerm = shading.looks[0].diffuse * light.sunColor; // n.l 1: no normals
+    EXPECT_LT(glm::length(shading.shade(mesh, atCentre, down, light) - (unlit + sunTerm * expectedAt(photons.value[9]))), 1e-12);
+    const Hit atP = scene.intersect(P + glm::dvec3(0.0, 0.0, 0.5), down);
+    ASSERT_TRUE(atP.hit);
+    EXPECT_LT(glm::length(shading.shade(mesh, atP, down, light) - unlit), 1e-12);
 }

@@ -86,7 +86,8 @@ glm::dvec3 SceneShading::shade(const TriangleMesh& mesh, const Hit& hit, const g
         }
         ndl += weight[k] * lit;
     }
-    const glm::dvec3 lit = look.emission + look.ambient * light.ambient + look.diffuse * light.sunColor * ndl;
+    const glm::dvec3 sun = light.sunShare ? light.sunShare(hit.point) * ndl : glm::dvec3(ndl);
+    const glm::dvec3 lit = look.emission + look.ambient * light.ambient + look.diffuse * light.sunColor * sun;
     if (!look.texture) return lit;
     const glm::dvec2 st = weight.x * t.texCoord[0] + weight.y * t.texCoord[1] + weight.z * t.texCoord[2];
     const glm::dvec3 texel = look.nearest ? sampleNearest(*look.texture, st, look.wrapS, look.wrapT)

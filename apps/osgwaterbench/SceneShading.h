@@ -7,6 +7,7 @@
 #include <osg/Texture>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+#include <functional>
 #include <vector>
 
 namespace bench {
@@ -32,6 +33,9 @@ struct TriangleLook {
 struct SceneLight {
     glm::dvec3 towardsSun{ 0.0, 0.0, 1.0 }; //!< unit
     glm::dvec3 sunColor{ 1.0 }, ambient{ 0.3 };
+    //! The share of the direct sun, per channel, reaching a scene point (the caustics and shadows
+    //! under the water: underwaterSunShare); unset, all of it everywhere.
+    std::function<glm::dvec3(const glm::dvec3&)> sunShare;
 };
 
 struct SceneShading {
@@ -39,10 +43,11 @@ struct SceneShading {
     std::vector<TriangleLook> triangles; //!< one per triangle of the mesh collected with it
 
     //! The linear light the scene program gives the point where `hit` (a hit of `mesh`, the mesh
-    //! collected with this shading) meets a ray along `dir`, without caustics, shadows and fog:
-    //! emission + ambient + diffuse sun, lit per vertex as scene.vert lights (n.l at each corner,
-    //! for the face the ray sees, interpolated), times the texture's texel decoded after bilinear
-    //! filtering at its finest level (or the nearest texel, as the texture magnifies).
+    //! collected with this shading) meets a ray along `dir`, without fog: emission + ambient +
+    //! diffuse sun, lit per vertex as scene.vert lights (n.l at each corner, for the face the ray
+    //! sees, interpolated) and times the light's sunShare at the point, times the texture's texel
+    //! decoded after bilinear filtering at its finest level (or the nearest texel, as the texture
+    //! magnifies).
     glm::dvec3 shade(const TriangleMesh& mesh, const Hit& hit, const glm::dvec3& dir, const SceneLight& light) const;
 };
 

@@ -9,6 +9,7 @@
 #include "BenchOptions.h"
 #include "ResumeCache.h"
 #include "Probe.h"
+#include "ReferenceCaustics.h"
 #include "ReferenceRenderer.h"
 #include "Report.h"
 #include "Techniques.h"
@@ -315,6 +316,23 @@ int main(int argc, char** argv)
     for (const View& v : views)
         if (!waterCasters.count(v.t)) waterCasters[v.t] = std::make_unique<WaterCaster>(*surface, v.t);
     std::cout << "reference: " << waterCasters.begin()->second->describe() << std::endl;
+    // the caustics reference at a time, over a window at a resolution (a preset may change it)
+    auto photonsAt = [&](double t, int resolution, int model, const osg::Matrixd& localToSun) -> const PhotonImage& {
+        const std::tuple<double, int, int> key(t, resolution, model);
+        auto it = photonImages.find(key);
+        if (it == photonImages.end()) {
+            PhotonSettings ps;
+            ps.photons = o.photons;
+            ps.resolution = resolution;
+            ps.attenuation = osgWater::photonExtinction(*base); // what the photon pass fades by
+            ps.media = media;
+            ps.progress = !o.quick;
+            std::cout << "caustics reference at t = " << t << " s:" << std::endl;
+            it = photonImages.emplace(key, tracePhotons(sceneCaster, *waterCasters[t], *surface, t, localToSun,
+                                                        base->getSunDirection(), ps)).first;
+        }
+        return it->second;
+    };
 
     std::vector<Record> records;
     std::vector<Summary> summaries;
@@ -375,9 +393,29 @@ int main(int argc, char** argv)
             if (traced.pixels.empty())
                 traced = traceView(reference, probe.camera()->getViewMatrix(), probe.camera()->getProjectionMatrix(), o.width,
                                    o.height);
+            const osgWater::CausticsCamera* cc = osgWater::internals(*water).getCausticsCamera();
             std::vector<glm::vec3>& referenceImage = referenceImages[{ vi, model }];
             if (referenceImage.empty()) {
-                const ReferenceRenderer renderer(reference, sceneShading, imageLight);
+                // the bed's caustics and underwater shadows from the photon reference, over the
+                // window of this technique's caustics (any window will do: the photons are exact)
+                ImageSetup setup = imageLight;
+                if (cc && s->getCausticsEnabled() && !cc->getLighting().procedural) {
+                    UnderwaterSun sun;
+                    sun.photons = &photonsAt(v.t, cc->getResolution(), model, cc->getLighting().localToSun);
+                    sun.localToSun = cc->getLighting().localToSun;
+                    sun.intensity = base->getCausticsIntensity();
+                    const osg::Vec3f channels = osgWater::channelExtinction(*base);
+                    sun.channelExtinction = glm::dvec3(channels.x(), channels.y(), channels.z());
+                    sun.level = surface->getLevel();
+                    sun.towardsSun = setup.light.towardsSun;
+                    sun.airIOR = media.air;
+                    sun.waterIOR = media.water;
+                    setup.light.sunShare = underwaterSunShare(sun, sceneCaster);
+                } else {
+                    std::cout << "reference image of " << v.name << " without caustics: " << tech.name
+                              << " draws none from photons (measure the default first)" << std::endl;
+                }
+                const ReferenceRenderer renderer(reference, sceneShading, setup);
                 referenceImage = renderer.render(probe.camera()->getViewMatrix(), probe.camera()->getProjectionMatrix(),
                                                  o.width, o.height);
             }
@@ -419,7 +457,6 @@ int main(int argc, char** argv)
             }
             if (osg::ref_ptr<osg::Image> caustics = probe.readCaustics(*water)) {
                 r.nanPixels += countNonFinite(caustics.get());
-                const osgWater::CausticsCamera* cc = osgWater::internals(*water).getCausticsCamera();
                 // a tile: what the scene shader reads at the bed point under each texel of the sun's
                 // window, at the tile's texel size
                 int resolution = cc->getResolution();
@@ -430,24 +467,12 @@ int main(int argc, char** argv)
                     caustics = tileSeenFromTheSun(caustics.get(), sceneCaster, cc->getLighting(),
                                                   water->getSettings()->getSunDirection(), surface->getLevel(), resolution);
                 }
-                const std::tuple<double, int, int> key(v.t, resolution, model); // a preset may change the resolution
-                auto it = photonImages.find(key);
-                if (it == photonImages.end()) {
-                    PhotonSettings ps;
-                    ps.photons = o.photons;
-                    ps.resolution = resolution;
-                    ps.attenuation = osgWater::photonExtinction(*base); // what the photon pass fades by
-                    ps.media = media;
-                    ps.progress = !o.quick;
-                    std::cout << "caustics reference at t = " << v.t << " s:" << std::endl;
-                    it = photonImages.emplace(key, tracePhotons(sceneCaster, waterCaster, *surface, v.t,
-                                                                cc->getLighting().localToSun, base->getSunDirection(), ps)).first;
-                }
+                const PhotonImage& photons = photonsAt(v.t, resolution, model, cc->getLighting().localToSun);
                 // blocks of one size on the bed whatever the window and resolution (a focused window
                 // has fewer texels of the same size): comparable across techniques
                 const double texelMetres = std::max(cc->getWindow().x(), cc->getWindow().y()) / resolution;
                 const int block = std::max(1, int(std::lround(kCausticsBlockMetres / texelMetres)));
-                r.causticsErrors = measureCaustics(it->second, caustics.get(), block);
+                r.causticsErrors = measureCaustics(photons, caustics.get(), block);
             }
             std::printf("%-24s %-28s %8.1f ms  plain %6.1f ms  x%.2f  refraction px median %.3f p99 %.2f  NaN %zu"
                         "  (timing %.0f s, capture+reference %.0f s, metrics %.0f s)\n",
