@@ -3,6 +3,7 @@
 #include "GLHarness.h"
 #include "RayCaster.h"
 #include "Reference.h"
+#include "ImageCompare.h"
 #include "ReferenceCaustics.h"
 #include "ReferenceRenderer.h"
 #include "WaterCaster.h"
@@ -469,7 +470,7 @@ TEST(ReferenceRenderer, ASkyIsTheLightOfRaysThatMeetNothing)
 // (emissive, nearest texels) parallel to the image, each pixel exactly two cells wide and its
 // edges on the cells' edges, 4 x 4 rays a pixel give every pixel one half to 1e-9; the pixel
 // centres alone sit on the cells' corners and give black or white (the reference aliased, as one
-// ray a pixel is)
+// ray a pixel is); and the two halves of a pixel's rays measure the image's noise
 TEST(ReferenceRenderer, APixelsLightIsTheMeanOverItsArea)
 {
     const int w = 64, h = 48;
@@ -496,6 +497,21 @@ TEST(ReferenceRenderer, APixelsLightIsTheMeanOverItsArea)
     std::cout << "4 x 4 rays: worst " << worst << " from a half; one ray: " << centreDeviation << " on average\n";
     EXPECT_LT(worst, 1e-6); // single-precision image
     EXPECT_GT(centreDeviation, 0.4);
+
+    // The image's own noise from two halves of its rays, the n x n grid split as a checkerboard:
+    // with 2 x 2 rays each falls in a cell of its own, so one half sees only black cells and the
+    // other only white ones (the pixel itself is grey), and the noise, half the mean CIEDE2000
+    // between the halves, is half of black against white's 100. Identical halves have none.
+    setup.samplesPerAxis = 2;
+    std::vector<glm::vec3> halves[2];
+    const std::vector<glm::vec3> grey = ReferenceRenderer(*rs.ref, rs.shading, setup).render(view, proj, w, h, &halves);
+    const std::vector<bool> everyPixel(grey.size(), true);
+    double spread = 0.0;
+    for (size_t i = 0; i < grey.size(); ++i)
+        spread = std::max(spread, double(std::fabs(halves[0][i].x - halves[1][i].x)));
+    EXPECT_GT(spread, 1.0 - 1e-6) << "one half black, the other white";
+    EXPECT_NEAR(referenceNoise(halves[0], halves[1], DisplayTransform{}, everyPixel), 50.0, 1e-3);
+    EXPECT_EQ(referenceNoise(grey, grey, DisplayTransform{}, everyPixel), 0.0);
 }
 
 // The sky is the same light both ways round: calm water over a bed under an osgWater::Sky, drawn by

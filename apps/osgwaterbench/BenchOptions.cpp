@@ -12,7 +12,7 @@ namespace {
 const char* kUsage =
     "usage: osgwaterbench --scene FILE --views FILE [--size WxH] [--out DIR] [--techniques LIST]\n"
     "                     [--docs DIR] [--frames N] [--photons N] [--reference-samples N] [--quick]\n"
-    "                     [--ablation-rounds N] [--ablation-only] [--resume KEY]\n"
+    "                     [--ablation-rounds N] [--ablation-only] [--resume KEY] [--water-type NAME]\n"
     "       osgwaterbench --fresnel-figure DIR\n"
     "  --scene FILE       .osgt/.osgb with an osgWater::WaterNode, or any model (water added at z = 0)\n"
     "  --views FILE       one view per line: ex ey ez cx cy cz ux uy uz [t] [# name]\n"
@@ -23,6 +23,8 @@ const char* kUsage =
     "  --frames N         timed frames per technique and view (default 30, at least 30)\n"
     "  --photons N        photons of the caustics reference (default 4000000)\n"
     "  --reference-samples N  the reference image's rays a pixel: N x N (default 2, 1..8)\n"
+    "  --water-type NAME  a water preset (WaterTypes: clear-lake, murky-pond, ...) on the scene's\n"
+    "                     settings before every technique (default: the scene's as they are)\n"
     "  --ablation-rounds N  alternating rounds of the ablation table (default 3, 0: none)\n"
     "  --ablation-only    the ablation table alone (timing; no techniques, no reference)\n"
     "  --resume KEY       keep each finished technique and the ablation under OUT/resume, and take\n"
@@ -72,6 +74,7 @@ bool BenchOptions::read(int argc, char** argv, std::string& error)
         else if (a == "--docs") { if (!value(docs)) return false; }
         else if (a == "--fresnel-figure") { if (!value(fresnelFigure)) return false; }
         else if (a == "--techniques") { if (!value(techniques)) return false; }
+        else if (a == "--water-type") { if (!value(waterType)) return false; }
         else if (a == "--resume") { if (!value(resumeKey)) return false; }
         else if (a == "--size") {
             if (!value(v)) return false;

@@ -9,6 +9,7 @@ struct BenchOptions {
     std::string scene, viewsFile, out = "bench-out", techniques, docs, commandLine;
     std::string resumeKey;         //!< --resume KEY: finished work kept and taken again (see ResumeCache)
     std::string fresnelFigure;     //!< --fresnel-figure DIR: the Fresnel fit's figure and table alone
+    std::string waterType;         //!< --water-type NAME: a WaterTypes preset on the scene's settings ("": as they are)
     int width = 1280, height = 720;
     int frames = 30;               //!< timed frames per technique and view (>= 30 unless --quick)
     size_t photons = 4000000;      //!< caustics reference photons (>= 1e6 for published tables)

@@ -100,4 +100,19 @@ ImageErrors compareWithReference(const osg::Image& shown, const std::vector<glm:
     return e;
 }
 
+double referenceNoise(const std::vector<glm::vec3>& halfA, const std::vector<glm::vec3>& halfB,
+                      const DisplayTransform& display, const std::vector<bool>& water)
+{
+    if (halfA.empty() || halfA.size() != halfB.size() || water.size() != halfA.size()) return ImageErrors::kNone;
+    double sum = 0.0;
+    size_t n = 0;
+    for (size_t i = 0; i < halfA.size(); ++i) {
+        if (!water[i]) continue;
+        sum += deltaE(clamp01(osgWater::optics::display(halfA[i], display.exposure, display.curve)),
+                      clamp01(osgWater::optics::display(halfB[i], display.exposure, display.curve)));
+        ++n;
+    }
+    return n ? 0.5 * sum / double(n) : ImageErrors::kNone;
+}
+
 }

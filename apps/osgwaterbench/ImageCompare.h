@@ -16,6 +16,10 @@ struct ImageErrors {
     double ssimWater = kNone, ssimFrame = kNone;           //!< luma SSIM (Wang et al. 2004)
     double deltaEMeanWater = kNone, deltaEP95Water = kNone; //!< CIEDE2000 over the water pixels
     double deltaEMeanFrame = kNone, deltaEP95Frame = kNone; //!< ... and over every pixel
+    //! The reference image's own noise over the water: half the mean CIEDE2000 between two
+    //! independent halves of its rays (referenceNoise), about the full image's mean difference from
+    //! its converged self. Error below it is not the render's to remove.
+    double referenceNoiseWater = kNone;
 };
 
 //! How the display shows linear light: exposed, through the tone curve, encoded (0..1).
@@ -33,5 +37,12 @@ struct DisplayTransform {
 ImageErrors compareWithReference(const osg::Image& shown, const std::vector<glm::vec3>& reference,
                                  const DisplayTransform& display, const std::vector<bool>& water,
                                  osg::ref_ptr<osg::Image>* triplet = nullptr);
+
+//! Half the mean CIEDE2000 over the water pixels between two independent estimates of one
+//! reference image (ReferenceRenderer::render's halves), as the display shows them: the mean of
+//! the two is off its converged value by about that much (for independent halves of one variance,
+//! |mean - truth| is distributed as |a - b| / 2). NaN without halves or water pixels.
+double referenceNoise(const std::vector<glm::vec3>& halfA, const std::vector<glm::vec3>& halfB,
+                      const DisplayTransform& display, const std::vector<bool>& water);
 
 }

@@ -80,21 +80,32 @@ glm::dvec3 ReferenceRenderer::follow(const glm::dvec3& org, const glm::dvec3& di
 }
 
 std::vector<glm::vec3> ReferenceRenderer::render(const osg::Matrixd& viewMatrix, const osg::Matrixd& projection,
-                                                  int width, int height) const
+                                                  int width, int height, std::vector<glm::vec3> (*halves)[2]) const
 {
     const int n = std::max(1, _setup.samplesPerAxis);
     const osg::Vec3d eyePoint = osg::Matrixd::inverse(viewMatrix).getTrans();
     const bool eyeBelow = _ref.eyeBelow(glm::dvec3(eyePoint.x(), eyePoint.y(), eyePoint.z())); // one eye for every ray
-    std::vector<glm::dvec3> sum(size_t(width) * height, glm::dvec3(0.0));
+    const size_t pixels = size_t(width) * height;
+    std::vector<glm::dvec3> sum[2] = { std::vector<glm::dvec3>(pixels, glm::dvec3(0.0)),
+                                       std::vector<glm::dvec3>(pixels, glm::dvec3(0.0)) };
+    int count[2] = { 0, 0 };
     for (int j = 0; j < n; ++j)
-        for (int i = 0; i < n; ++i)
+        for (int i = 0; i < n; ++i) {
+            const int half = (i + j) % 2;
+            ++count[half];
             forEachPixelRay(viewMatrix, projection, width, height,
                             [&](int x, int y, const glm::dvec3& eye, const glm::dvec3& dir) {
-                                sum[size_t(y) * width + x] += radiance(eye, dir, eyeBelow);
+                                sum[half][size_t(y) * width + x] += radiance(eye, dir, eyeBelow);
                             },
                             glm::dvec2((i + 0.5) / n, (j + 0.5) / n));
-    std::vector<glm::vec3> image(sum.size());
-    for (size_t k = 0; k < sum.size(); ++k) image[k] = glm::vec3(sum[k] / double(n * n));
+        }
+    std::vector<glm::vec3> image(pixels);
+    for (size_t k = 0; k < pixels; ++k) image[k] = glm::vec3((sum[0][k] + sum[1][k]) / double(n * n));
+    if (halves)
+        for (int h = 0; h < 2; ++h) {
+            (*halves)[h].assign(count[1] ? pixels : 0, glm::vec3(0.0f));
+            for (size_t k = 0; count[1] && k < pixels; ++k) (*halves)[h][k] = glm::vec3(sum[h][k] / double(count[h]));
+        }
     return image;
 }
 

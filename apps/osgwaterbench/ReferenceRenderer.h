@@ -46,9 +46,11 @@ public:
     glm::dvec3 radiance(const glm::dvec3& org, const glm::dvec3& dir, bool inWater) const;
     //! Every pixel of a view (row 0 at the bottom): the mean light of samplesPerAxis^2 rays through it,
     //! linear (single precision: a view's worth is kept per view for every technique); the eye's
-    //! medium from the wave at its place.
+    //! medium from the wave at its place. With `halves` (and at least 2 x 2 rays), also the mean of
+    //! each half of the rays, the grid's cells split as a checkerboard's: two independent
+    //! estimates whose difference measures the image's own noise.
     std::vector<glm::vec3> render(const osg::Matrixd& viewMatrix, const osg::Matrixd& projection, int width,
-                                   int height) const;
+                                   int height, std::vector<glm::vec3> (*halves)[2] = nullptr) const;
 
 private:
     glm::dvec3 follow(const glm::dvec3& org, const glm::dvec3& dir, bool inWater, int waterHits) const;

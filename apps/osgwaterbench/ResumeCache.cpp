@@ -56,7 +56,8 @@ json toJson(const Record& r)
     const ImageErrors& e = r.image;
     j["image"] = { { "ssimWater", number(e.ssimWater) }, { "ssimFrame", number(e.ssimFrame) },
                    { "deltaEMeanWater", number(e.deltaEMeanWater) }, { "deltaEP95Water", number(e.deltaEP95Water) },
-                   { "deltaEMeanFrame", number(e.deltaEMeanFrame) }, { "deltaEP95Frame", number(e.deltaEP95Frame) } };
+                   { "deltaEMeanFrame", number(e.deltaEMeanFrame) }, { "deltaEP95Frame", number(e.deltaEP95Frame) },
+                   { "referenceNoiseWater", number(e.referenceNoiseWater) } };
     return j;
 }
 
@@ -106,6 +107,7 @@ Record recordFrom(const json& j)
     r.image.deltaEP95Water = number(e.at("deltaEP95Water"));
     r.image.deltaEMeanFrame = number(e.at("deltaEMeanFrame"));
     r.image.deltaEP95Frame = number(e.at("deltaEP95Frame"));
+    r.image.referenceNoiseWater = number(e.at("referenceNoiseWater"));
     return r;
 }
 
@@ -196,7 +198,7 @@ ResumeCache::ResumeCache(const std::string& dir, const std::string& sourceKey, c
     _key = sourceKey + " scene " + o.scene + " views " + o.viewsFile + " size " + std::to_string(o.width) + "x" +
            std::to_string(o.height) + " frames " + std::to_string(o.frames) + " photons " + std::to_string(o.photons) +
            " reference samples " + std::to_string(o.referenceSamples) + " ablation rounds " + std::to_string(o.ablationRounds) +
-           (o.quick ? " quick" : "");
+           (o.waterType.empty() ? "" : " water type " + o.waterType) + (o.quick ? " quick" : "");
 }
 
 std::string ResumeCache::file(const std::string& name) const { return _dir + "/" + name + ".json"; }

@@ -18,6 +18,7 @@
 #include "../common/SceneWater.h"
 #include "../common/Today.h"
 #include "frame/SceneLighting.h"
+#include <osgWater/WaterTypes>
 #include <osgDB/FileUtils>
 #include <osgDB/ReadFile>
 #include <osgDB/WriteFile>
@@ -41,6 +42,14 @@ using namespace bench;
 namespace {
 
 // A view's name as a file name: its letters and digits, a hyphen for each run of anything else
+// the pixels whose reference ray meets the water first
+std::vector<bool> waterPixelsOf(const ReferenceImage& traced)
+{
+    std::vector<bool> water(traced.pixels.size());
+    for (size_t i = 0; i < traced.pixels.size(); ++i) water[i] = traced.pixels[i].flags & PixelRef::WATER;
+    return water;
+}
+
 std::string fileName(const std::string& view)
 {
     std::string f;
@@ -222,6 +231,7 @@ int main(int argc, char** argv)
         std::cerr << "error: could not read " << o.scene << std::endl;
         return 2;
     }
+    if (!o.waterType.empty() && !osgWater::applyWaterType(*water->getSettings(), o.waterType)) return 2; // it names the presets
     if (!osgDB::makeDirectory(o.out)) {
         std::cerr << "error: cannot create the output folder " << o.out << std::endl;
         return 2;
@@ -300,6 +310,7 @@ int main(int argc, char** argv)
     ImageSetup imageLight = imageSetup(*water, timing.getCamera()->getClearColor());
     imageLight.samplesPerAxis = o.referenceSamples;
     std::map<std::pair<size_t, int>, std::vector<glm::vec3>> referenceImages; // (view, model) -> linear light
+    std::map<std::pair<size_t, int>, double> referenceNoises;                 // ... and its own noise
     const std::string tripletDir = o.out + "/triplets";
     if (!osgDB::makeDirectory(tripletDir)) {
         std::cerr << "error: cannot create the folder " << tripletDir << std::endl;
@@ -416,8 +427,11 @@ int main(int argc, char** argv)
                               << " draws none from photons (measure the default first)" << std::endl;
                 }
                 const ReferenceRenderer renderer(reference, sceneShading, setup);
+                std::vector<glm::vec3> halves[2];
                 referenceImage = renderer.render(probe.camera()->getViewMatrix(), probe.camera()->getProjectionMatrix(),
-                                                 o.width, o.height);
+                                                 o.width, o.height, &halves);
+                referenceNoises[{ vi, model }] = referenceNoise(halves[0], halves[1], DisplayTransform{ s->getExposure(), s->getToneCurve() },
+                                                                waterPixelsOf(traced));
             }
             const double captureAndTraceS = osg::Timer::instance()->delta_s(phase, osg::Timer::instance()->tick());
             r.eyeBelow = reference.eyeBelow(glm::dvec3(v.eye.x(), v.eye.y(), v.eye.z()));
@@ -430,11 +444,10 @@ int main(int argc, char** argv)
             r.nanPixels = ve.nanPixels;
             if (e.color.valid()) {
                 const DisplayTransform display{ s->getExposure(), s->getToneCurve() };
-                std::vector<bool> waterMask(traced.pixels.size());
-                for (size_t i = 0; i < traced.pixels.size(); ++i) waterMask[i] = traced.pixels[i].flags & PixelRef::WATER;
                 osg::ref_ptr<osg::Image> side;
-                r.image = compareWithReference(*e.color, referenceImage, display, waterMask,
+                r.image = compareWithReference(*e.color, referenceImage, display, waterPixelsOf(traced),
                                                tech.name == "default" ? &side : nullptr);
+                r.image.referenceNoiseWater = referenceNoises[{ vi, model }];
                 if (side.valid()) {
                     osgDB::writeImageFile(*side, tripletDir + "/" + fileName(v.name) + ".png");
                     if (vi == 0 && !o.docs.empty() && osgDB::makeDirectory(o.docs))
