@@ -470,7 +470,8 @@ TEST(ReferenceRenderer, ASkyIsTheLightOfRaysThatMeetNothing)
 // (emissive, nearest texels) parallel to the image, each pixel exactly two cells wide and its
 // edges on the cells' edges, 4 x 4 rays a pixel give every pixel one half to 1e-9; the pixel
 // centres alone sit on the cells' corners and give black or white (the reference aliased, as one
-// ray a pixel is); and the two halves of a pixel's rays measure the image's noise
+// ray a pixel is); the two halves of a pixel's rays measure the image's noise, and the noisy
+// pixels take more rays
 TEST(ReferenceRenderer, APixelsLightIsTheMeanOverItsArea)
 {
     const int w = 64, h = 48;
@@ -503,15 +504,35 @@ TEST(ReferenceRenderer, APixelsLightIsTheMeanOverItsArea)
     // other only white ones (the pixel itself is grey), and the noise, half the mean CIEDE2000
     // between the halves, is half of black against white's 100. Identical halves have none.
     setup.samplesPerAxis = 2;
-    std::vector<glm::vec3> halves[2];
-    const std::vector<glm::vec3> grey = ReferenceRenderer(*rs.ref, rs.shading, setup).render(view, proj, w, h, &halves);
+    RenderExtras extras;
+    const std::vector<glm::vec3> grey = ReferenceRenderer(*rs.ref, rs.shading, setup).render(view, proj, w, h, &extras);
     const std::vector<bool> everyPixel(grey.size(), true);
     double spread = 0.0;
     for (size_t i = 0; i < grey.size(); ++i)
-        spread = std::max(spread, double(std::fabs(halves[0][i].x - halves[1][i].x)));
+        spread = std::max(spread, double(std::fabs(extras.halves[0][i].x - extras.halves[1][i].x)));
     EXPECT_GT(spread, 1.0 - 1e-6) << "one half black, the other white";
-    EXPECT_NEAR(referenceNoise(halves[0], halves[1], DisplayTransform{}, everyPixel), 50.0, 1e-3);
+    EXPECT_NEAR(referenceNoise(extras.halves[0], extras.halves[1], DisplayTransform{}, everyPixel), 50.0, 1e-3);
     EXPECT_EQ(referenceNoise(grey, grey, DisplayTransform{}, everyPixel), 0.0);
+    EXPECT_EQ(extras.refinedPixels, 0u) << "no refining asked for";
+
+    // Pixels whose halves disagree take m x m more rays: here every pixel, 4 x 4 more, whose cells
+    // (a quarter of a board cell each) fall 8 on white and 8 on black, half of each in either half:
+    // the pixel stays one half grey, its halves move to 0.4 and 0.6 (2 + 8 rays each), to 1e-6
+    setup.refineSamplesPerAxis = 4;
+    const std::vector<glm::vec3> refined = ReferenceRenderer(*rs.ref, rs.shading, setup).render(view, proj, w, h, &extras);
+    EXPECT_EQ(extras.refinedPixels, refined.size());
+    double worstRefined = 0.0, worstHalf = 0.0;
+    for (size_t i = 0; i < refined.size(); ++i) {
+        worstRefined = std::max(worstRefined, double(std::fabs(refined[i].x - 0.5f)));
+        const float lo = std::min(extras.halves[0][i].x, extras.halves[1][i].x), hi = std::max(extras.halves[0][i].x, extras.halves[1][i].x);
+        worstHalf = std::max({ worstHalf, double(std::fabs(lo - 0.4f)), double(std::fabs(hi - 0.6f)) });
+    }
+    EXPECT_LT(worstRefined, 1e-6);
+    EXPECT_LT(worstHalf, 1e-6);
+    // a smooth image has no noisy pixel to refine: the board seen from 4 x 4 rays a pixel
+    setup.samplesPerAxis = 4;
+    ReferenceRenderer(*rs.ref, rs.shading, setup).render(view, proj, w, h, &extras);
+    EXPECT_EQ(extras.refinedPixels, 0u);
 }
 
 // The sky is the same light both ways round: calm water over a bed under an osgWater::Sky, drawn by

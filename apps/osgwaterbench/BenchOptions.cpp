@@ -23,6 +23,8 @@ const char* kUsage =
     "  --frames N         timed frames per technique and view (default 30, at least 30)\n"
     "  --photons N        photons of the caustics reference (default 4000000)\n"
     "  --reference-samples N  the reference image's rays a pixel: N x N (default 2, 1..8)\n"
+    "  --reference-refine M   and M x M more where the two halves of a pixel's rays disagree by over 1%\n"
+    "                     (the far water's sub-pixel waves; default 4, 0..8, 0: none)\n"
     "  --water-type NAME  a water preset (WaterTypes: clear-lake, murky-pond, ...) on the scene's\n"
     "                     settings before every technique (default: the scene's as they are)\n"
     "  --ablation-rounds N  alternating rounds of the ablation table (default 3, 0: none)\n"
@@ -100,6 +102,13 @@ bool BenchOptions::read(int argc, char** argv, std::string& error)
                 return false;
             }
             referenceSamples = int(x);
+        } else if (a == "--reference-refine") {
+            if (!value(v)) return false;
+            if (!number(v.c_str(), x) || x < 0 || x > 8 || x != std::floor(x)) {
+                error = "--reference-refine " + v + ": expected a whole number 0..8";
+                return false;
+            }
+            referenceRefine = int(x);
         } else {
             error = "unknown option " + a + "\n" + kUsage;
             return false;

@@ -14,6 +14,7 @@ struct BenchOptions {
     int frames = 30;               //!< timed frames per technique and view (>= 30 unless --quick)
     size_t photons = 4000000;      //!< caustics reference photons (>= 1e6 for published tables)
     int referenceSamples = 2;      //!< the reference image's rays a pixel, each way (n x n)
+    int referenceRefine = 4;       //!< ... and m x m more where its two halves disagree (0: none)
     int ablationRounds = 3;        //!< alternating rounds of the ablation (0: none)
     bool quick = false, help = false;
     bool ablationOnly = false;     //!< the ablation alone: no techniques, no reference

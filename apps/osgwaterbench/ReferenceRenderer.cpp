@@ -80,32 +80,52 @@ glm::dvec3 ReferenceRenderer::follow(const glm::dvec3& org, const glm::dvec3& di
 }
 
 std::vector<glm::vec3> ReferenceRenderer::render(const osg::Matrixd& viewMatrix, const osg::Matrixd& projection,
-                                                  int width, int height, std::vector<glm::vec3> (*halves)[2]) const
+                                                  int width, int height, RenderExtras* extras) const
 {
-    const int n = std::max(1, _setup.samplesPerAxis);
     const osg::Vec3d eyePoint = osg::Matrixd::inverse(viewMatrix).getTrans();
     const bool eyeBelow = _ref.eyeBelow(glm::dvec3(eyePoint.x(), eyePoint.y(), eyePoint.z())); // one eye for every ray
     const size_t pixels = size_t(width) * height;
+    // each half's sum and ray count per pixel
     std::vector<glm::dvec3> sum[2] = { std::vector<glm::dvec3>(pixels, glm::dvec3(0.0)),
                                        std::vector<glm::dvec3>(pixels, glm::dvec3(0.0)) };
-    int count[2] = { 0, 0 };
-    for (int j = 0; j < n; ++j)
-        for (int i = 0; i < n; ++i) {
-            const int half = (i + j) % 2;
-            ++count[half];
-            forEachPixelRay(viewMatrix, projection, width, height,
-                            [&](int x, int y, const glm::dvec3& eye, const glm::dvec3& dir) {
-                                sum[half][size_t(y) * width + x] += radiance(eye, dir, eyeBelow);
-                            },
-                            glm::dvec2((i + 0.5) / n, (j + 0.5) / n));
+    std::vector<int> count[2] = { std::vector<int>(pixels, 0), std::vector<int>(pixels, 0) };
+    // n x n rays through the cell centres of a grid over each pixel taken (`take`: all, or some)
+    auto grid = [&](int n, const std::vector<char>* take) {
+        for (int j = 0; j < n; ++j)
+            for (int i = 0; i < n; ++i) {
+                const int half = (i + j) % 2;
+                forEachPixelRay(viewMatrix, projection, width, height,
+                                [&](int x, int y, const glm::dvec3& eye, const glm::dvec3& dir) {
+                                    const size_t k = size_t(y) * width + x;
+                                    if (take && !(*take)[k]) return;
+                                    sum[half][k] += radiance(eye, dir, eyeBelow);
+                                    ++count[half][k];
+                                },
+                                glm::dvec2((i + 0.5) / n, (j + 0.5) / n));
+            }
+    };
+    auto halfMean = [&](int h, size_t k) { return count[h][k] ? sum[h][k] / double(count[h][k]) : glm::dvec3(0.0); };
+    const int n = std::max(1, _setup.samplesPerAxis);
+    grid(n, nullptr);
+    size_t refined = 0;
+    if (n >= 2 && _setup.refineSamplesPerAxis > 0) {
+        std::vector<char> noisy(pixels, 0);
+        for (size_t k = 0; k < pixels; ++k) {
+            const glm::dvec3 d = glm::abs(halfMean(0, k) - halfMean(1, k));
+            noisy[k] = std::max({ d.x, d.y, d.z }) > _setup.refineAbove;
+            refined += size_t(noisy[k]);
         }
+        if (refined) grid(_setup.refineSamplesPerAxis, &noisy);
+    }
     std::vector<glm::vec3> image(pixels);
-    for (size_t k = 0; k < pixels; ++k) image[k] = glm::vec3((sum[0][k] + sum[1][k]) / double(n * n));
-    if (halves)
+    for (size_t k = 0; k < pixels; ++k) image[k] = glm::vec3((sum[0][k] + sum[1][k]) / double(count[0][k] + count[1][k]));
+    if (extras) {
+        extras->refinedPixels = refined;
         for (int h = 0; h < 2; ++h) {
-            (*halves)[h].assign(count[1] ? pixels : 0, glm::vec3(0.0f));
-            for (size_t k = 0; count[1] && k < pixels; ++k) (*halves)[h][k] = glm::vec3(sum[h][k] / double(count[h]));
+            extras->halves[h].assign(n >= 2 ? pixels : 0, glm::vec3(0.0f));
+            for (size_t k = 0; n >= 2 && k < pixels; ++k) extras->halves[h][k] = glm::vec3(halfMean(h, k));
         }
+    }
     return image;
 }
 

@@ -18,6 +18,7 @@
 #include "SceneShading.h"
 #include <osg/Vec4>
 #include <functional>
+#include <vector>
 
 namespace osgWater { class WaterNode; }
 
@@ -31,6 +32,19 @@ struct ImageSetup {
     std::function<glm::dvec3(const glm::dvec3&)> sky; //!< linear light along a ray in the air that meets nothing
     int maxWaterHits = 8;         //!< water meetings followed per path
     int samplesPerAxis = 1;       //!< a pixel's light: the mean over n x n rays through a grid's cell centres
+    //! Where a pixel's two halves of rays (see render) differ by more than refineAbove in a channel
+    //! (linear light), m x m more rays through another grid's cell centres (0: none): the far
+    //! water's sub-pixel waves, not the image's smooth parts, take the extra rays.
+    int refineSamplesPerAxis = 0;
+    double refineAbove = 0.01;
+};
+
+//! What render can say besides the image.
+struct RenderExtras {
+    //! The mean of each half of every pixel's rays, the grids' cells split as a checkerboard's: two
+    //! independent estimates whose difference measures the image's own noise (2 x 2 rays or more).
+    std::vector<glm::vec3> halves[2];
+    size_t refinedPixels = 0; //!< pixels that took the refining rays
 };
 
 //! The setup of a water node's scene: its sun, ambient and water, and its sky (an osgWater::Sky
@@ -46,11 +60,9 @@ public:
     glm::dvec3 radiance(const glm::dvec3& org, const glm::dvec3& dir, bool inWater) const;
     //! Every pixel of a view (row 0 at the bottom): the mean light of samplesPerAxis^2 rays through it,
     //! linear (single precision: a view's worth is kept per view for every technique); the eye's
-    //! medium from the wave at its place. With `halves` (and at least 2 x 2 rays), also the mean of
-    //! each half of the rays, the grid's cells split as a checkerboard's: two independent
-    //! estimates whose difference measures the image's own noise.
+    //! medium from the wave at its place; the noisy pixels refined (ImageSetup::refineSamplesPerAxis).
     std::vector<glm::vec3> render(const osg::Matrixd& viewMatrix, const osg::Matrixd& projection, int width,
-                                   int height, std::vector<glm::vec3> (*halves)[2] = nullptr) const;
+                                   int height, RenderExtras* extras = nullptr) const;
 
 private:
     glm::dvec3 follow(const glm::dvec3& org, const glm::dvec3& dir, bool inWater, int waterHits) const;

@@ -252,8 +252,12 @@ bool writeDocs(const std::string& dir, const RunInfo& info, const std::vector<Re
        << "- Reference: the eye rays against the analytic waves at the view's time (double precision), then Embree "
        << "ray casting over the scene's triangles; caustics by "
        << info.photons << " photons traced from the sun; the reference image by Whitted ray tracing on the same "
-       << "machinery, " << info.referenceSamples << " × " << info.referenceSamples << " rays a pixel (exact Fresnel, "
-       << "up to 8 water hits a path, the scene program's colours; no caustics or shadows yet), shown as the technique shows its light (exposure, tone curve, sRGB); "
+       << "machinery, " << info.referenceSamples << " × " << info.referenceSamples << " rays a pixel"
+       << (info.referenceRefine > 0 ? " and " + std::to_string(info.referenceRefine) + " × " + std::to_string(info.referenceRefine) +
+                                          " more where its two halves disagree by over 1%"
+                                    : std::string())
+       << " (exact Fresnel, "
+       << "up to 8 water hits a path, the scene program's colours, caustics and underwater shadows from the traced photons), shown as the technique shows its light (exposure, tone curve, sRGB); "
        << "`triplets/` beside the run's output has each view's render | reference | CIEDE2000 (black 0, white ≥ 10) "
        << "for the default, and `benchmark-reference.png` the first view's\n"
        << "- Height queries (`WaterNode::getSurfaceHeightAt` with the normal, the scene's waves, one thread): "

@@ -54,6 +54,7 @@ struct RunInfo {
     int width = 0, height = 0, frames = 0;
     size_t photons = 0;
     int referenceSamples = 1; //!< the reference image's rays a pixel, each way
+    int referenceRefine = 0;  //!< ... and more, each way, where a pixel's halves disagree
     unsigned int cpus = 0;
     bool quick = false;
     double heightQueriesPerSecond = 0.0; //!< WaterNode::getSurfaceHeightAt with the normal, one thread

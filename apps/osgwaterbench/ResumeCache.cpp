@@ -197,7 +197,7 @@ ResumeCache::ResumeCache(const std::string& dir, const std::string& sourceKey, c
     if (sourceKey.empty()) return;
     _key = sourceKey + " scene " + o.scene + " views " + o.viewsFile + " size " + std::to_string(o.width) + "x" +
            std::to_string(o.height) + " frames " + std::to_string(o.frames) + " photons " + std::to_string(o.photons) +
-           " reference samples " + std::to_string(o.referenceSamples) + " ablation rounds " + std::to_string(o.ablationRounds) +
+           " reference samples " + std::to_string(o.referenceSamples) + " refine " + std::to_string(o.referenceRefine) + " ablation rounds " + std::to_string(o.ablationRounds) +
            (o.waterType.empty() ? "" : " water type " + o.waterType) + (o.quick ? " quick" : "");
 }
 

@@ -266,6 +266,7 @@ int main(int argc, char** argv)
     info.frames = o.frames;
     info.photons = o.photons;
     info.referenceSamples = o.referenceSamples;
+    info.referenceRefine = o.referenceRefine;
     info.quick = o.quick;
     info.date = osgWaterApps::today();
     info.cpus = std::thread::hardware_concurrency();
@@ -309,6 +310,7 @@ int main(int argc, char** argv)
     // the reference image's light and sky: the scene's own settings (no technique changes them)
     ImageSetup imageLight = imageSetup(*water, timing.getCamera()->getClearColor());
     imageLight.samplesPerAxis = o.referenceSamples;
+    imageLight.refineSamplesPerAxis = o.referenceRefine;
     std::map<std::pair<size_t, int>, std::vector<glm::vec3>> referenceImages; // (view, model) -> linear light
     std::map<std::pair<size_t, int>, double> referenceNoises;                 // ... and its own noise
     const std::string tripletDir = o.out + "/triplets";
@@ -427,11 +429,14 @@ int main(int argc, char** argv)
                               << " draws none from photons (measure the default first)" << std::endl;
                 }
                 const ReferenceRenderer renderer(reference, sceneShading, setup);
-                std::vector<glm::vec3> halves[2];
+                RenderExtras extras;
                 referenceImage = renderer.render(probe.camera()->getViewMatrix(), probe.camera()->getProjectionMatrix(),
-                                                 o.width, o.height, &halves);
-                referenceNoises[{ vi, model }] = referenceNoise(halves[0], halves[1], DisplayTransform{ s->getExposure(), s->getToneCurve() },
+                                                 o.width, o.height, &extras);
+                referenceNoises[{ vi, model }] = referenceNoise(extras.halves[0], extras.halves[1],
+                                                                DisplayTransform{ s->getExposure(), s->getToneCurve() },
                                                                 waterPixelsOf(traced));
+                std::cout << "reference image of " << v.name << ": " << extras.refinedPixels << " noisy pixels took "
+                          << setup.refineSamplesPerAxis << " x " << setup.refineSamplesPerAxis << " more rays" << std::endl;
             }
             const double captureAndTraceS = osg::Timer::instance()->delta_s(phase, osg::Timer::instance()->tick());
             r.eyeBelow = reference.eyeBelow(glm::dvec3(v.eye.x(), v.eye.y(), v.eye.z()));
