@@ -43,6 +43,18 @@ bool number(const char* s, double& out)
     return end != s && *end == '\0' && std::isfinite(out);
 }
 
+// option `name`'s value `v` as a whole number lo..hi, else false with a message
+bool wholeNumber(const std::string& name, const std::string& v, int lo, int hi, int& out, std::string& error)
+{
+    double x = 0.0;
+    if (!number(v.c_str(), x) || x < lo || x > hi || x != std::floor(x)) {
+        error = name + " " + v + ": expected a whole number " + std::to_string(lo) + ".." + std::to_string(hi);
+        return false;
+    }
+    out = int(x);
+    return true;
+}
+
 }
 
 bool BenchOptions::read(int argc, char** argv, std::string& error)
@@ -96,19 +108,9 @@ bool BenchOptions::read(int argc, char** argv, std::string& error)
             photons = size_t(x);
             photonsGiven = true;
         } else if (a == "--reference-samples") {
-            if (!value(v)) return false;
-            if (!number(v.c_str(), x) || x < 1 || x > 8 || x != std::floor(x)) {
-                error = "--reference-samples " + v + ": expected a whole number 1..8";
-                return false;
-            }
-            referenceSamples = int(x);
+            if (!value(v) || !wholeNumber(a, v, 1, 8, referenceSamples, error)) return false;
         } else if (a == "--reference-refine") {
-            if (!value(v)) return false;
-            if (!number(v.c_str(), x) || x < 0 || x > 8 || x != std::floor(x)) {
-                error = "--reference-refine " + v + ": expected a whole number 0..8";
-                return false;
-            }
-            referenceRefine = int(x);
+            if (!value(v) || !wholeNumber(a, v, 0, 8, referenceRefine, error)) return false;
         } else {
             error = "unknown option " + a + "\n" + kUsage;
             return false;
