@@ -91,6 +91,35 @@ float owFresnelOverSlopes(float cosE, float roughness, float n1, float n2, float
     return total > 0.0 ? sum / total : owFresnel(c, n1, n2, q);
 }
 
+// The standard normal's distribution (Abramowitz and Stegun's 7.1.26 for erf, within 1.5e-7)
+float owNormalBelow(float z)
+{
+    float x = abs(z) * 0.70710678;
+    float t = 1.0 / (1.0 + 0.3275911 * x);
+    float erfx = 1.0 - ((((1.061405429 * t - 1.453152027) * t + 1.421413741) * t - 0.284496736) * t + 0.254829592) * t * exp(-x * x);
+    return 0.5 + 0.5 * sign(z) * erfx;
+}
+
+// The share of the mirror rays that the facets the eye sees send back under the level, where the
+// pixel's normal (cosE from the eye, its mirror ray's sine of elevation sinMirror) hides slopes of
+// variance `roughness` (both axes): a facet tilted away from the eye by a slope a along the plane of
+// incidence turns the mirror ray down by 2 atan(a), so rays go under for a > tan(e / 2), e the
+// mirror ray's elevation; each facet weighted by its area seen from the eye (c - sin a, c = cosE),
+// over Gaussian slopes in closed form. No hidden slopes: all below the level, none above.
+float owShareSentUnder(float cosE, float sinMirror, float roughness)
+{
+    float e = asin(clamp(sinMirror, -1.0, 1.0));
+    float s = sqrt(max(0.5 * roughness, 0.0));
+    if (s < 1e-6) return e < 0.0 ? 1.0 : 0.0;
+    float c = clamp(cosE, 0.0, 1.0);
+    float sinE = sqrt(max(1.0 - c * c, 0.0));
+    float visible = min(c / max(sinE, 1e-6), 1e4) / s, under = min(tan(0.5 * e) / s, visible);
+    // the facets' seen area below slope z s: c Phi(z) + sinE s phi(z)
+    float all = c * owNormalBelow(visible) + sinE * s * 0.39894228 * exp(-0.5 * visible * visible);
+    float below = c * owNormalBelow(under) + sinE * s * 0.39894228 * exp(-0.5 * under * under);
+    return all > 0.0 ? clamp((all - below) / all, 0.0, 1.0) : (e < 0.0 ? 1.0 : 0.0);
+}
+
 // eq. 4; d < 0 means "no bottom along the ray"
 float owAttenuation(float k, float d)
 {

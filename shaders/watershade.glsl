@@ -322,6 +322,11 @@ vec3 owShadeWater(vec3 U, vec3 Nup, vec3 E, float roughness, out vec4 debugOut)
 #else
     debugOut = debugHit;
 #endif
+#if !defined(OSGWATER_EYE_BELOW) && !defined(OSGWATER_NO_REFRACTION)
+    // a mirror ray the waves send back under the level meets the water again, mostly to pass into
+    // it: its light is the water's own (the refracted colour here), not the sky along its direction
+    reflCol = mix(reflCol, refrCol, owShareSentUnder(cosE, Rr.z, roughness));
+#endif
     return refrCol + F * (reflCol - refrCol); // eq. 9
 }
 

@@ -3,6 +3,7 @@
 // water the render's water covers exactly the pixels whose rays meet the waves.
 #include "GLHarness.h"
 #include "optics/Optics.h"
+#include "optics/Srgb.h"
 #include <osgWater/WaterNode>
 #include <osgWater/WaterSurface>
 #include <algorithm>
@@ -316,6 +317,66 @@ TEST(RenderSurface, ThePixelsSlopesAndRoughnessMakeCoxMunksTotalNearAndFar)
     // are below the pixels (0.028), and without them the water would be a mirror
     EXPECT_LT(bands[0].roughness / bands[0].n, 0.5 * coxMunk);
     EXPECT_GT(bands[1].roughness / bands[1].n, 0.5 * coxMunk);
+}
+
+// A mirror ray the waves send back under the level meets the water again and passes into it: under
+// a breeze, with nothing under the water (its light the body colour) and the clear colour for sky,
+// each water pixel shows body + F (1 - share) (sky - body), F its reflectance (DEBUG_FRESNEL) and
+// share the CPU mirror's share of its mirror rays sent under (shareSentUnder, at the pixel's
+// cosine, mirror ray and roughness from DEBUG_SURFACE and DEBUG_SLOPES), within 2/255 at the
+// median and 6/255 at the 99th percentile (the colour's reads against the debug outputs' own); where
+// a quarter or more of the rays go under (looking 1 m above the water along it), the sky along them
+// would be 20/255 and more off.
+TEST(RenderSurface, UnderTheWindTheMirrorRaysSentUnderTheLevelShowTheWater)
+{
+    Harness h(320, 240);
+    REQUIRE_GL(h);
+    osg::ref_ptr<WaterNode> water = windWater();
+    h.setScene(water.get());
+    const osg::Vec3d eye(0, -60, 1.0);
+    h.lookAt(eye, osg::Vec3d(0, 0, -1.0));
+    osg::ref_ptr<osg::Image> out[4];
+    const DebugOutput outputs[4] = { DEBUG_SURFACE, DEBUG_SLOPES, DEBUG_FRESNEL, DEBUG_NONE };
+    for (int i = 0; i < 4; ++i) {
+        water->setDebugOutput(outputs[i]);
+        h.frame(3.0);
+        out[i] = h.readColor();
+        ASSERT_TRUE(out[i].valid());
+    }
+    const WaterSettings* s = water->getSettings();
+    const osg::Vec4 clear = h.camera()->getClearColor();
+    const glm::vec3 sky = optics::decodeSrgb(glm::vec3(clear.r(), clear.g(), clear.b()));
+    const glm::vec3 body(s->getBodyColor().x(), s->getBodyColor().y(), s->getBodyColor().z());
+    std::vector<double> error;
+    size_t sentUnder = 0, skyWouldMiss = 0;
+    for (int y = 0; y < out[0]->t(); ++y)
+        for (int x = 0; x < out[0]->s(); ++x) {
+            const float *u = pixel(out[0].get(), x, y), *slopes = pixel(out[1].get(), x, y), *f = pixel(out[2].get(), x, y);
+            if (u[3] != 2.0f || slopes[3] != 2.0f || f[3] != 2.0f) continue;
+            const glm::vec3 E = glm::normalize(glm::vec3(eye.x() - u[0], eye.y() - u[1], eye.z() - u[2]));
+            const glm::vec3 N = optics::faceNormal(glm::normalize(glm::vec3(-slopes[0], -slopes[1], 1.0f)), E);
+            const float cosE = glm::clamp(glm::dot(E, N), 0.0f, 1.0f);
+            const glm::vec3 Rr = glm::reflect(-E, N);
+            const float share = optics::shareSentUnder(cosE, Rr.z, slopes[2]);
+            const glm::vec3 expected = optics::display(body + f[0] * (1.0f - share) * (sky - body), 1.0f);
+            const float* c = pixel(out[3].get(), x, y);
+            double e = 0.0;
+            for (int k = 0; k < 3; ++k) e = std::max(e, std::fabs(double(c[k]) - expected[k]));
+            error.push_back(e);
+            if (share > 0.25f) {
+                ++sentUnder;
+                const glm::vec3 asSky = optics::display(body + f[0] * (sky - body), 1.0f);
+                skyWouldMiss += glm::length(asSky - expected) > 20.0f / 255.0f;
+            }
+        }
+    ASSERT_GT(error.size(), 20000u);
+    const double median = percentile(error, 0.5), p99 = percentile(error, 0.99);
+    std::cout << error.size() << " water pixels, " << sentUnder << " sending a quarter or more under (" << skyWouldMiss
+              << " where the sky would be 20/255 off): median " << median * 255.0 << "/255, p99 " << p99 * 255.0 << "/255\n";
+    EXPECT_GT(sentUnder, 200u);
+    EXPECT_GT(skyWouldMiss, 100u);
+    EXPECT_LT(median, 2.0 / 255.0);
+    EXPECT_LT(p99, 6.0 / 255.0);
 }
 
 // Where a pixel hides slopes, its reflectance is Fresnel averaged over the facets it sees: across the

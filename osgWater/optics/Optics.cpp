@@ -129,6 +129,23 @@ float fresnelOverSlopes(int model, float cosE, float roughness, float n1, float 
     return total > 0.0f ? sum / total : fresnelModel(model, c, n1, n2, q);
 }
 
+float shareSentUnder(float cosE, float sinMirror, float roughness)
+{
+    const double e = std::asin(std::min(std::max(double(sinMirror), -1.0), 1.0));
+    const double s = std::sqrt(std::max(0.5 * double(roughness), 0.0));
+    if (s < 1e-6) return e < 0.0 ? 1.0f : 0.0f;
+    const double c = std::min(std::max(double(cosE), 0.0), 1.0), sinE = std::sqrt(std::max(1.0 - c * c, 0.0));
+    // the facets' seen area below slope x: the integral of (c - sinE a) over the slopes' Gaussian
+    auto seenBelow = [&](double x) {
+        const double z = x / s;
+        return c * 0.5 * (1.0 + std::erf(z / std::sqrt(2.0))) + sinE * s * std::exp(-0.5 * z * z) / std::sqrt(2.0 * 3.14159265358979);
+    };
+    const double visible = c / std::max(sinE, 1e-9), under = std::tan(0.5 * e);
+    const double all = seenBelow(visible);
+    if (!(all > 0.0)) return e < 0.0 ? 1.0f : 0.0f;
+    return float(std::min(std::max((all - seenBelow(std::min(under, visible))) / all, 0.0), 1.0));
+}
+
 FromBelow underwaterThesis(const glm::vec3& E, const glm::vec3& N, float n1, float n2, float q)
 {
     FromBelow r;

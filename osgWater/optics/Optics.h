@@ -53,6 +53,12 @@ OSGWATER_EXPORT float fresnelModel(int model, float cosE, float n1, float n2, fl
 //! variance `roughness` (mean |grad h|^2, alike every way), each facet weighted by its area seen from
 //! the eye (owFresnelOverSlopes: four Gauss-Legendre nodes along the plane of incidence).
 OSGWATER_EXPORT float fresnelOverSlopes(int model, float cosE, float roughness, float n1, float n2, float q);
+//! The share of the mirror rays that the facets the eye sees send back under the level, where the
+//! pixel's normal (cosE from the eye, its mirror ray's sine of elevation sinMirror) hides slopes of
+//! variance `roughness` (owShareSentUnder): a facet tilted away from the eye by a slope a along the
+//! plane of incidence turns the mirror ray down by 2 atan(a), each facet weighted by its area seen
+//! from the eye, in closed form over Gaussian slopes. No hidden slopes: 1 below the level, else 0.
+OSGWATER_EXPORT float shareSentUnder(float cosE, float sinMirror, float roughness);
 
 //! The surface seen from below (thesis §7.5): E unit towards the eye (down, into the water), N unit
 //! normal on the eye's side, n1 water, n2 air. R: direction of the transmitted ray (not unit for the
