@@ -319,6 +319,52 @@ TEST(RenderSurface, ThePixelsSlopesAndRoughnessMakeCoxMunksTotalNearAndFar)
     EXPECT_GT(bands[1].roughness / bands[1].n, 0.5 * coxMunk);
 }
 
+namespace {
+
+// A water pixel of a breeze's frame as the debug outputs tell it: its F (DEBUG_FRESNEL), its hidden
+// slopes' variance (DEBUG_SLOPES), the unit vector to the eye and the drawn normal facing it there
+// (DEBUG_SURFACE), and its colour when the frame without debug output was read
+struct WindPixel {
+    float F = 0.0f, roughness = 0.0f, cosE = 0.0f;
+    glm::vec3 E{ 0.0f }, N{ 0.0f };
+    const float* colour = nullptr;
+};
+
+// The breeze's lake seen from `eye` toward `centre` at t = 3 s: every water pixel (`withColour`: the
+// plain frame read too)
+std::vector<WindPixel> windPixels(Harness& h, WaterNode& water, const osg::Vec3d& eye, const osg::Vec3d& centre,
+                                  bool withColour, std::vector<osg::ref_ptr<osg::Image>>& frames)
+{
+    h.setScene(&water);
+    h.lookAt(eye, centre);
+    std::vector<DebugOutput> outputs = { DEBUG_SURFACE, DEBUG_SLOPES, DEBUG_FRESNEL };
+    if (withColour) outputs.push_back(DEBUG_NONE);
+    frames.clear();
+    for (DebugOutput o : outputs) {
+        water.setDebugOutput(o);
+        h.frame(3.0);
+        frames.push_back(h.readColor());
+        if (!frames.back().valid()) return {};
+    }
+    std::vector<WindPixel> pixels;
+    for (int y = 0; y < frames[0]->t(); ++y)
+        for (int x = 0; x < frames[0]->s(); ++x) {
+            const float *u = pixel(frames[0].get(), x, y), *slopes = pixel(frames[1].get(), x, y), *f = pixel(frames[2].get(), x, y);
+            if (u[3] != 2.0f || slopes[3] != 2.0f || f[3] != 2.0f) continue;
+            WindPixel p;
+            p.F = f[0];
+            p.roughness = slopes[2];
+            p.E = glm::normalize(glm::vec3(eye.x() - u[0], eye.y() - u[1], eye.z() - u[2]));
+            p.N = optics::faceNormal(glm::normalize(glm::vec3(-slopes[0], -slopes[1], 1.0f)), p.E);
+            p.cosE = glm::clamp(glm::dot(p.E, p.N), 0.0f, 1.0f);
+            if (withColour) p.colour = pixel(frames[3].get(), x, y);
+            pixels.push_back(p);
+        }
+    return pixels;
+}
+
+}
+
 // A mirror ray the waves send back under the level meets the water again and passes into it: under
 // a breeze, with nothing under the water (its light the body colour) and the clear colour for sky,
 // each water pixel shows body + F (1 - share) (sky - body), F its reflectance (DEBUG_FRESNEL) and
@@ -332,43 +378,28 @@ TEST(RenderSurface, UnderTheWindTheMirrorRaysSentUnderTheLevelShowTheWater)
     Harness h(320, 240);
     REQUIRE_GL(h);
     osg::ref_ptr<WaterNode> water = windWater();
-    h.setScene(water.get());
-    const osg::Vec3d eye(0, -60, 1.0);
-    h.lookAt(eye, osg::Vec3d(0, 0, -1.0));
-    osg::ref_ptr<osg::Image> out[4];
-    const DebugOutput outputs[4] = { DEBUG_SURFACE, DEBUG_SLOPES, DEBUG_FRESNEL, DEBUG_NONE };
-    for (int i = 0; i < 4; ++i) {
-        water->setDebugOutput(outputs[i]);
-        h.frame(3.0);
-        out[i] = h.readColor();
-        ASSERT_TRUE(out[i].valid());
-    }
+    std::vector<osg::ref_ptr<osg::Image>> frames;
+    const std::vector<WindPixel> pixels = windPixels(h, *water, osg::Vec3d(0, -60, 1.0), osg::Vec3d(0, 0, -1.0), true, frames);
+    ASSERT_EQ(frames.size(), 4u);
     const WaterSettings* s = water->getSettings();
     const osg::Vec4 clear = h.camera()->getClearColor();
     const glm::vec3 sky = optics::decodeSrgb(glm::vec3(clear.r(), clear.g(), clear.b()));
     const glm::vec3 body(s->getBodyColor().x(), s->getBodyColor().y(), s->getBodyColor().z());
     std::vector<double> error;
     size_t sentUnder = 0, skyWouldMiss = 0;
-    for (int y = 0; y < out[0]->t(); ++y)
-        for (int x = 0; x < out[0]->s(); ++x) {
-            const float *u = pixel(out[0].get(), x, y), *slopes = pixel(out[1].get(), x, y), *f = pixel(out[2].get(), x, y);
-            if (u[3] != 2.0f || slopes[3] != 2.0f || f[3] != 2.0f) continue;
-            const glm::vec3 E = glm::normalize(glm::vec3(eye.x() - u[0], eye.y() - u[1], eye.z() - u[2]));
-            const glm::vec3 N = optics::faceNormal(glm::normalize(glm::vec3(-slopes[0], -slopes[1], 1.0f)), E);
-            const float cosE = glm::clamp(glm::dot(E, N), 0.0f, 1.0f);
-            const glm::vec3 Rr = glm::reflect(-E, N);
-            const float share = optics::shareSentUnder(cosE, Rr.z, slopes[2]);
-            const glm::vec3 expected = optics::display(body + f[0] * (1.0f - share) * (sky - body), 1.0f);
-            const float* c = pixel(out[3].get(), x, y);
-            double e = 0.0;
-            for (int k = 0; k < 3; ++k) e = std::max(e, std::fabs(double(c[k]) - expected[k]));
-            error.push_back(e);
-            if (share > 0.25f) {
-                ++sentUnder;
-                const glm::vec3 asSky = optics::display(body + f[0] * (sky - body), 1.0f);
-                skyWouldMiss += glm::length(asSky - expected) > 20.0f / 255.0f;
-            }
+    for (const WindPixel& p : pixels) {
+        const glm::vec3 Rr = glm::reflect(-p.E, p.N);
+        const float share = optics::shareSentUnder(p.cosE, Rr.z, p.roughness);
+        const glm::vec3 expected = optics::display(body + p.F * (1.0f - share) * (sky - body), 1.0f);
+        double e = 0.0;
+        for (int k = 0; k < 3; ++k) e = std::max(e, std::fabs(double(p.colour[k]) - expected[k]));
+        error.push_back(e);
+        if (share > 0.25f) {
+            ++sentUnder;
+            const glm::vec3 asSky = optics::display(body + p.F * (sky - body), 1.0f);
+            skyWouldMiss += glm::length(asSky - expected) > 20.0f / 255.0f;
         }
+    }
     ASSERT_GT(error.size(), 20000u);
     const double median = percentile(error, 0.5), p99 = percentile(error, 0.99);
     std::cout << error.size() << " water pixels, " << sentUnder << " sending a quarter or more under (" << skyWouldMiss
@@ -388,38 +419,24 @@ TEST(RenderSurface, UnderTheWindAPixelsReflectanceIsAveragedOverTheSlopesItHides
     Harness h(320, 240);
     REQUIRE_GL(h);
     osg::ref_ptr<WaterNode> water = windWater();
-    h.setScene(water.get());
-    const osg::Vec3d eye(0, -60, 3);
-    h.lookAt(eye, osg::Vec3d(0, 0, 0));
-    osg::ref_ptr<osg::Image> out[3];
-    const DebugOutput outputs[3] = { DEBUG_SURFACE, DEBUG_SLOPES, DEBUG_FRESNEL };
-    for (int i = 0; i < 3; ++i) {
-        water->setDebugOutput(outputs[i]);
-        h.frame(3.0);
-        out[i] = h.readColor();
-        ASSERT_TRUE(out[i].valid());
-    }
+    std::vector<osg::ref_ptr<osg::Image>> frames;
+    const std::vector<WindPixel> pixels = windPixels(h, *water, osg::Vec3d(0, -60, 3), osg::Vec3d(0, 0, 0), false, frames);
+    ASSERT_EQ(frames.size(), 3u);
     const WaterSettings* s = water->getSettings();
     std::vector<double> error;
     double pointF = 0.0, meanF = 0.0;
     size_t grazing = 0;
-    for (int y = 0; y < out[0]->t(); ++y)
-        for (int x = 0; x < out[0]->s(); ++x) {
-            const float *u = pixel(out[0].get(), x, y), *slopes = pixel(out[1].get(), x, y), *f = pixel(out[2].get(), x, y);
-            if (u[3] != 2.0f || slopes[3] != 2.0f || f[3] != 2.0f) continue;
-            const glm::vec3 E = glm::normalize(glm::vec3(eye.x() - u[0], eye.y() - u[1], eye.z() - u[2]));
-            const glm::vec3 N = optics::faceNormal(glm::normalize(glm::vec3(-slopes[0], -slopes[1], 1.0f)), E);
-            const float cosE = glm::clamp(glm::dot(E, N), 0.0f, 1.0f);
-            const float expected = optics::fresnelOverSlopes(s->getFresnelModel(), cosE, slopes[2], s->getAirIOR(),
-                                                             s->getWaterIOR(), s->getFresnelModelExponent());
-            error.push_back(std::fabs(f[0] - expected));
-            if (cosE < 0.05f) {
-                pointF += optics::fresnelModel(s->getFresnelModel(), cosE, s->getAirIOR(), s->getWaterIOR(),
-                                               s->getFresnelModelExponent());
-                meanF += f[0];
-                ++grazing;
-            }
+    for (const WindPixel& p : pixels) {
+        const float expected = optics::fresnelOverSlopes(s->getFresnelModel(), p.cosE, p.roughness, s->getAirIOR(),
+                                                         s->getWaterIOR(), s->getFresnelModelExponent());
+        error.push_back(std::fabs(p.F - expected));
+        if (p.cosE < 0.05f) {
+            pointF += optics::fresnelModel(s->getFresnelModel(), p.cosE, s->getAirIOR(), s->getWaterIOR(),
+                                           s->getFresnelModelExponent());
+            meanF += p.F;
+            ++grazing;
         }
+    }
     ASSERT_GT(error.size(), 20000u);
     ASSERT_GT(grazing, 2000u);
     const double median = percentile(error, 0.5), p99 = percentile(error, 0.99);
