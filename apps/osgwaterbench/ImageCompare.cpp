@@ -14,6 +14,12 @@ glm::vec3 clamp01(const glm::vec3& c)
     return glm::vec3(one(c.x), one(c.y), one(c.z));
 }
 
+// Linear light as the display shows it, 0..1
+glm::vec3 shownAs(const glm::vec3& linear, const DisplayTransform& d)
+{
+    return clamp01(osgWater::optics::display(linear, d.exposure, d.curve));
+}
+
 // Both images as the display shows them, 0..1, row-major from the bottom
 struct DisplayPair {
     int width = 0, height = 0;
@@ -29,8 +35,7 @@ struct DisplayPair {
                 const size_t i = size_t(y) * width + x;
                 const osg::Vec4 c = image.getColor(unsigned(x), unsigned(y));
                 shown[i] = clamp01(glm::vec3(c.r(), c.g(), c.b()));
-                reference[i] = i < linear.size() ? clamp01(osgWater::optics::display(linear[i], d.exposure, d.curve))
-                                                 : glm::vec3(0.0f);
+                reference[i] = i < linear.size() ? shownAs(linear[i], d) : glm::vec3(0.0f);
             }
     }
 };
@@ -108,8 +113,7 @@ double referenceNoise(const std::vector<glm::vec3>& halfA, const std::vector<glm
     size_t n = 0;
     for (size_t i = 0; i < halfA.size(); ++i) {
         if (!water[i]) continue;
-        sum += deltaE(clamp01(osgWater::optics::display(halfA[i], display.exposure, display.curve)),
-                      clamp01(osgWater::optics::display(halfB[i], display.exposure, display.curve)));
+        sum += deltaE(shownAs(halfA[i], display), shownAs(halfB[i], display));
         ++n;
     }
     return n ? 0.5 * sum / double(n) : ImageErrors::kNone;
