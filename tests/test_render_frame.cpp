@@ -265,3 +265,42 @@ TEST(RenderFrame, PassTimesAndWhetherEachPassRanGoIntoTheViewersStatistics)
     EXPECT_LT(water->getPassMilliseconds(h.camera(), PASS_REFLECTION), 0.0);
     EXPECT_FALSE(stats->getAttribute(h.viewer()->getFrameStamp()->getFrameNumber(), "osgWater reflection ran", v));
 }
+
+// Fragments counted (GL_ARB_pipeline_statistics_query) are the work a pass asks of the rasteriser:
+// a bed that fills the refraction pass's target asks one fragment per texel, so the count follows
+// the target's area. (A software rasteriser shades 4x4 blocks: a block an edge crosses is shaded
+// for the triangles on both sides. The bed's edges across the target, at most four, cross at most
+// side / 2 blocks each: at most 32 side texels more.)
+TEST(RenderFrame, ThePassesCountTheFragmentsTheyShade)
+{
+    Harness h(96, 64);
+    REQUIRE_GL(h);
+    osg::ref_ptr<WaterNode> water = flatWater();
+    water->getSettings()->setCausticsEnabled(false);
+    water->addChild(checkerPlane(-2.0f, 400.0f, 1.0f));
+    water->setPassTimingEnabled(true);
+    h.setScene(water.get());
+    h.lookAt(osg::Vec3d(0, 0, 3), osg::Vec3d(0, 0.01, -1));
+    auto refractionFragments = [&](int side) {
+        water->getSettings()->setRefractionTextureSize(side);
+        for (int i = 0; i < 4; ++i) {
+            h.frame(1.0 + i / 60.0); // results are read a frame after they are made
+            h.readColor();
+        }
+        const ViewReport r = water->getViewReport(h.camera());
+        EXPECT_EQ(r.refractionSize[0], side);
+        EXPECT_EQ(r.refractionSize[1], side);
+        return r.fragments[PASS_REFRACTION];
+    };
+    for (int side : { 256, 512 }) {
+        const double fragments = refractionFragments(side);
+        EXPECT_GE(fragments, double(side * side)) << side;
+        EXPECT_LE(fragments, double(side * side + 32 * side)) << side;
+    }
+    const ViewReport r = water->getViewReport(h.camera());
+    EXPECT_GE(r.fragments[PASS_SURFACE], double(h.width() * h.height())) << "the water fills the view";
+    EXPECT_LT(r.fragments[PASS_SCENE], 0.0) << "the scene is drawn in the view's bins: not counted";
+    water->setPassTimingEnabled(false);
+    h.frame(2.0);
+    EXPECT_LT(water->getViewReport(h.camera()).fragments[PASS_REFRACTION], 0.0) << "off: nothing counted";
+}

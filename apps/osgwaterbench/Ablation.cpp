@@ -61,7 +61,7 @@ Ablation runAblation(osgViewer::Viewer& viewer, osg::Switch* scenes, WaterNode& 
         camera->setViewMatrixAsLookAt(view.eye, view.center, view.up);
         av.eyeBelow = water.eyeHeightAboveSurface(view.eye, view.t) < 0.0; // the scene's water is not transformed
         std::map<std::string, std::vector<double>> roundMeans;
-        std::map<int, std::vector<double>> passMs;
+        std::map<int, std::vector<double>> passMs, passFragments;
         double t = view.t;
         for (int round = 0; round < rounds; ++round)
             for (const AblationConfig& c : a.configs) {
@@ -85,10 +85,11 @@ Ablation runAblation(osgViewer::Viewer& viewer, osg::Switch* scenes, WaterNode& 
                     av.effectRan["glow"] = av.effectRan["glow"] || plan.runs(osgWater::PASS_GLOW_COMPOSITE);
                     av.effectRan["reflection"] = av.effectRan["reflection"] || plan.runs(osgWater::PASS_REFLECTION);
                     av.effectRan["refraction"] = av.effectRan["refraction"] || plan.runs(osgWater::PASS_REFRACTION);
+                    const osgWater::ViewReport report = water.getViewReport(camera);
                     for (int pass = 0; pass < osgWater::PASS_COUNT; ++pass) {
-                        const double gpu = water.getPassMilliseconds(camera, osgWater::PassId(pass));
-                        if (gpu >= 0.0 && osgWater::gpuTimeLabel(osgWater::PassId(pass)) && plan.runs(osgWater::PassId(pass)))
-                            passMs[pass].push_back(gpu);
+                        if (!osgWater::gpuTimeLabel(osgWater::PassId(pass)) || !plan.runs(osgWater::PassId(pass))) continue;
+                        if (report.milliseconds[pass] >= 0.0) passMs[pass].push_back(report.milliseconds[pass]);
+                        if (report.fragments[pass] >= 0.0) passFragments[pass].push_back(report.fragments[pass]);
                     }
                 }
                 roundMeans[c.name].push_back(osgWaterApps::medianOfBlockMeans(ms, ms.size()));
@@ -96,6 +97,7 @@ Ablation runAblation(osgViewer::Viewer& viewer, osg::Switch* scenes, WaterNode& 
         av.effectRan["skips"] = av.waterInView;
         for (const auto& [name, means] : roundMeans) av.ms[name] = osgWaterApps::median(means);
         for (const auto& [pass, ms] : passMs) av.passMs[pass] = osgWaterApps::median(ms);
+        for (const auto& [pass, counts] : passFragments) av.passFragments[pass] = osgWaterApps::median(counts);
         a.views.push_back(av);
         std::printf("ablation %-28s everything on x%.2f  caustics off x%.2f  glow off x%.2f  surface only x%.2f\n",
                     view.name.c_str(), ablationRatio(av, "everything on"), ablationRatio(av, "caustics off"),

@@ -1,6 +1,7 @@
 // The ablation: for every view, the frame with everything on, then each effect off in turn, the
 // skips off, the surface alone and the quality presets, all timed in one run in alternating rounds
-// (so drifts in machine load hit every configuration alike), with each pass's own GPU time.
+// (so drifts in machine load hit every configuration alike), with each pass's own GPU time and
+// its fragment shader invocations (the work, which the machine's load does not change).
 // Timing only: the errors of the same configurations are the techniques' table's.
 #pragma once
 #include "Views.h"
@@ -29,6 +30,7 @@ struct AblationView {
     std::map<std::string, double> ms;      //!< configuration -> frame time (median over rounds of the round's mean)
     std::map<std::string, bool> effectRan; //!< effect -> its passes ran with everything on
     std::map<int, double> passMs;          //!< PassId -> median GPU time with everything on (passes that ran)
+    std::map<int, double> passFragments;   //!< PassId -> median fragment shader invocations a frame, the same
 };
 
 struct Ablation {

@@ -159,10 +159,13 @@ AblationSummary summarizeAblation(const Ablation& a)
         row.views = int(costs.size());
         s.rows.push_back(row);
     }
-    std::map<int, std::vector<double>> passes;
-    for (const AblationView& v : a.views)
+    std::map<int, std::vector<double>> passes, fragments;
+    for (const AblationView& v : a.views) {
         for (const auto& [pass, ms] : v.passMs) passes[pass].push_back(ms);
-    for (const auto& [pass, ms] : passes) s.passMs.push_back({ pass, median(ms) });
+        for (const auto& [pass, n] : v.passFragments) fragments[pass].push_back(n);
+    }
+    for (const auto& [pass, ms] : passes) s.passMs[pass] = median(ms);
+    for (const auto& [pass, n] : fragments) s.passFragments[pass] = median(n);
     return s;
 }
 
@@ -173,6 +176,8 @@ bool writeAblationCsv(const std::string& file, const Ablation& a, std::string& e
     for (const AblationConfig& c : a.configs) out << ",\"" << c.name << " ms\"";
     for (int p = 0; p < osgWater::PASS_COUNT; ++p)
         if (const char* label = osgWater::gpuTimeLabel(osgWater::PassId(p))) out << ",\"" << label << " GPU ms\"";
+    for (int p = 0; p < osgWater::PASS_COUNT; ++p)
+        if (const char* label = osgWater::gpuTimeLabel(osgWater::PassId(p))) out << ",\"" << label << " fragments\"";
     out << '\n';
     for (const AblationView& v : a.views) {
         out << '"' << v.view << "\"," << v.waterInView << ',' << v.eyeBelow;
@@ -180,11 +185,12 @@ bool writeAblationCsv(const std::string& file, const Ablation& a, std::string& e
             auto it = v.ms.find(c.name);
             out << ',' << (it != v.ms.end() ? fmt(it->second, 3) : "");
         }
-        for (int p = 0; p < osgWater::PASS_COUNT; ++p) {
-            if (!osgWater::gpuTimeLabel(osgWater::PassId(p))) continue;
-            auto it = v.passMs.find(p);
-            out << ',' << (it != v.passMs.end() ? fmt(it->second, 3) : "");
-        }
+        for (const std::map<int, double>* measure : { &v.passMs, &v.passFragments })
+            for (int p = 0; p < osgWater::PASS_COUNT; ++p) {
+                if (!osgWater::gpuTimeLabel(osgWater::PassId(p))) continue;
+                auto it = measure->find(p);
+                out << ',' << (it != measure->end() ? fmt(it->second, measure == &v.passMs ? 3 : 0) : "");
+            }
         out << '\n';
     }
     if (!out) error = "cannot write " + file;
@@ -199,8 +205,11 @@ void printAblation(const Ablation& a)
         std::printf("  %-16s x%.2f  %7.1f ms%s\n", r.config.c_str(), r.ratio, r.frameMs,
                     r.effect.empty() ? "" : ("  costs " + fmt(100.0 * r.cost, 1, "%") + " over " + std::to_string(r.views) + " views").c_str());
     std::printf("  water out of view x%.3f\n", s.outOfView);
-    for (const auto& [pass, ms] : s.passMs)
-        std::printf("  %-18s %6.2f ms GPU\n", osgWater::gpuTimeLabel(osgWater::PassId(pass)), ms);
+    for (const auto& [pass, ms] : s.passMs) {
+        auto n = s.passFragments.find(pass);
+        std::printf("  %-18s %6.2f ms GPU  %s\n", osgWater::gpuTimeLabel(osgWater::PassId(pass)), ms,
+                    n != s.passFragments.end() ? (fmt(n->second * 1e-6, 3) + " M fragments").c_str() : "fragments not counted");
+    }
 }
 
 bool writeJson(const std::string& file, const std::vector<Record>& records, std::string& error)
@@ -347,10 +356,41 @@ bool writeDocs(const std::string& dir, const RunInfo& info, const std::vector<Re
         md << "| water out of view (everything on) | " << fmt(abl.outOfView, 3, "×") << " | – | – | – |\n";
         md << "\nEach pass's own GPU time with everything on (GL timestamp queries; median over the views where it ran). "
            << "On a software rasteriser a pass drawn in the view itself (surface, cap, composite) is timed only up to "
-           << "the driver's deferred rasterisation, so its figure is low; the render-to-texture passes are timed whole.\n\n"
-           << "| pass | GPU ms |\n|---|---|\n";
-        for (const auto& [pass, ms] : abl.passMs)
-            md << "| " << osgWater::gpuTimeLabel(osgWater::PassId(pass)) << " | " << fmt(ms, 2) << " |\n";
+           << "the driver's deferred rasterisation, so its figure is low; the render-to-texture passes are timed whole. "
+           << "Its work: fragment shader invocations a frame (GL_ARB_pipeline_statistics_query), which this machine's "
+           << "load does not change; this driver shades 4x4 blocks, so a block a triangle's edge crosses counts whole "
+           << "for each triangle (a GPU counts pixels).\n\n"
+           << "| pass | GPU ms | fragments a frame (millions) |\n|---|---|---|\n";
+        for (const auto& [pass, ms] : abl.passMs) {
+            auto n = abl.passFragments.find(pass);
+            md << "| " << osgWater::gpuTimeLabel(osgWater::PassId(pass)) << " | " << fmt(ms, 2) << " | "
+               << (n != abl.passFragments.end() ? fmt(n->second * 1e-6, 3) : "–") << " |\n";
+        }
+        md << "\nThe work per view, everything on: each pass's fragments a frame over the view's " << info.width << "×"
+           << info.height << " pixels (the scene itself, drawn in the view's bins, is not counted).\n\n| view";
+        std::vector<int> counted;
+        for (int p = 0; p < osgWater::PASS_COUNT; ++p)
+            if (const char* label = osgWater::gpuTimeLabel(osgWater::PassId(p)))
+                for (const AblationView& v : ablation->views)
+                    if (v.passFragments.count(p)) {
+                        counted.push_back(p);
+                        md << " | " << label;
+                        break;
+                    }
+        md << " | all |\n|---";
+        for (size_t i = 0; i <= counted.size(); ++i) md << "|---";
+        md << "|\n";
+        const double pixels = double(info.width) * info.height;
+        for (const AblationView& v : ablation->views) {
+            md << "| " << v.view;
+            double all = 0.0;
+            for (int p : counted) {
+                auto n = v.passFragments.find(p);
+                md << " | " << (n != v.passFragments.end() ? fmt(n->second / pixels, 2, "×") : "–");
+                if (n != v.passFragments.end()) all += n->second;
+            }
+            md << " | " << fmt(all / pixels, 2, "×") << " |\n";
+        }
     }
     md << "\n";
     if (plotted) md << "![speed against error](" << png << ")\n\n";

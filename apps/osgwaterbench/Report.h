@@ -77,7 +77,8 @@ struct AblationSummary {
     };
     std::vector<Row> rows;
     double outOfView = 0.0; //!< everything on / plain with the water out of view (median over such views)
-    std::vector<std::pair<int, double>> passMs; //!< PassId -> median GPU ms over the views where it ran
+    std::map<int, double> passMs;        //!< PassId -> median GPU ms over the views where it ran
+    std::map<int, double> passFragments; //!< PassId -> median fragments a frame, the same
 };
 AblationSummary summarizeAblation(const Ablation& a);
 bool writeAblationCsv(const std::string& file, const Ablation& a, std::string& error);

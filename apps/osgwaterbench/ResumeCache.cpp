@@ -253,6 +253,7 @@ bool ResumeCache::loadAblation(Ablation& ablation) const
             for (const auto& [config, ms] : v.at("ms").items()) view.ms[config] = number(ms);
             for (const auto& [effect, ran] : v.at("effectRan").items()) view.effectRan[effect] = ran.get<bool>();
             for (const auto& [pass, ms] : v.at("passMs").items()) view.passMs[std::stoi(pass)] = number(ms);
+            for (const auto& [pass, n] : v.at("passFragments").items()) view.passFragments[std::stoi(pass)] = number(n);
             a.views.push_back(std::move(view));
         }
         ablation = std::move(a);
@@ -272,10 +273,12 @@ bool ResumeCache::saveAblation(const Ablation& a, std::string& error) const
     json j = { { "rounds", a.rounds }, { "frames", a.frames }, { "gather", a.gather }, { "views", json::array() } };
     for (const AblationView& v : a.views) {
         json view = { { "view", v.view }, { "waterInView", v.waterInView }, { "eyeBelow", v.eyeBelow },
-                      { "ms", json::object() }, { "effectRan", json::object() }, { "passMs", json::object() } };
+                      { "ms", json::object() }, { "effectRan", json::object() }, { "passMs", json::object() },
+                      { "passFragments", json::object() } };
         for (const auto& [config, ms] : v.ms) view["ms"][config] = number(ms);
         for (const auto& [effect, ran] : v.effectRan) view["effectRan"][effect] = ran;
         for (const auto& [pass, ms] : v.passMs) view["passMs"][std::to_string(pass)] = number(ms);
+        for (const auto& [pass, n] : v.passFragments) view["passFragments"][std::to_string(pass)] = number(n);
         j["views"].push_back(std::move(view));
     }
     return writeKept(file("ablation"), j, _key, error);

@@ -72,16 +72,16 @@ CausticsCamera::CausticsCamera(osg::Group* scene, osg::StateSet* sceneState, osg
     _gather = new PhotonGather(_photons->getPhotonTexture(), programs, gridSize, resolution, floatTargets, waterState);
     _lighting.caustics = _gather->getCausticsTexture();
     _lighting.depth = _depth;
-    _timer = new GpuTimer;
+    _meter = new PassMeter;
     // the per-frame passes (the depth map is redrawn only on change); set once: draw callbacks
     // must not change while drawing
-    _timer->attach(_photons.get(), _gather.get());
-    _depthTimer = new GpuTimer;
-    _depthTimer->setEnabled(false);
-    _depthTimer->attach(this);
-    _shadeTimer = new GpuTimer; // its own: tiled caustics do not draw the shade map
-    _shadeTimer->setEnabled(false);
-    if (_shade.valid()) _shadeTimer->attach(_shade.get());
+    _meter->attach(_photons.get(), _gather.get());
+    _depthMeter = new PassMeter;
+    _depthMeter->setEnabled(false);
+    _depthMeter->attach(this);
+    _shadeMeter = new PassMeter; // its own: tiled caustics do not draw the shade map
+    _shadeMeter->setEnabled(false);
+    if (_shade.valid()) _shadeMeter->attach(_shade.get());
 }
 
 osg::StateSet* CausticsCamera::depthOnlyState(ProgramLibrary& programs)
@@ -280,16 +280,16 @@ osg::Matrixd CausticsCamera::shadeProjection(const osg::Matrixd& sun, const osg:
     return osg::Matrixd::ortho(l, r, b, t, std::min(n, tn), fa);
 }
 
-double CausticsCamera::getDepthMilliseconds() const
+PassMeasure CausticsCamera::getDepthMeasure() const
 {
-    const double depth = _depthTimer->getMilliseconds(), shade = _shadeTimer->getMilliseconds();
-    return depth >= 0.0 && shade >= 0.0 && _shade.valid() && !_tiled ? depth + shade : depth;
+    const PassMeasure depth = _depthMeter->getMeasure();
+    return _shade.valid() && !_tiled ? depth + _shadeMeter->getMeasure() : depth;
 }
 
 void CausticsCamera::setTimingEnabled(bool on)
 {
-    _depthTimer->setEnabled(on);
-    _shadeTimer->setEnabled(on);
+    _depthMeter->setEnabled(on);
+    _shadeMeter->setEnabled(on);
 }
 
 double CausticsCamera::getTexelSize() const

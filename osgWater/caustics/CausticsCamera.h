@@ -6,7 +6,7 @@
 #include "caustics/PhotonCamera.h"
 #include "caustics/PhotonGather.h"
 #include "shaders/ProgramLibrary.h"
-#include "frame/GpuTimer.h"
+#include "frame/PassMeter.h"
 #include <osg/BoundingBox>
 #include <map>
 #include <vector>
@@ -139,10 +139,12 @@ public:
     bool isAutoGatherSettled() const { return _autoChoice >= 0; }
 
     //! GPU time of the photon and gather passes together, ms (negative until measured).
-    double getMilliseconds() const { return _timer->getMilliseconds(); }
-    //! GPU time of the sun's depth pass (its depth map and shade map), ms (negative until measured or
-    //! while timing is off).
-    double getDepthMilliseconds() const;
+    double getMilliseconds() const { return _meter->getMilliseconds(); }
+    //! The same with their fragments.
+    PassMeasure getMeasure() const { return _meter->getMeasure(); }
+    //! GPU time and fragments of the sun's depth pass (its depth map and shade map; negative until
+    //! measured or while timing is off).
+    PassMeasure getDepthMeasure() const;
     //! Time the sun's depth pass (the photon and gather passes are always timed: the automatic
     //! gather chooses by their time).
     void setTimingEnabled(bool on);
@@ -161,7 +163,7 @@ protected:
     osg::ref_ptr<PhotonCamera> _photons;
     osg::ref_ptr<PhotonGather> _gather;
     CausticsLighting _lighting;
-    osg::ref_ptr<GpuTimer> _timer, _depthTimer, _shadeTimer;
+    osg::ref_ptr<PassMeter> _meter, _depthMeter, _shadeMeter;
     osg::Vec3d _window;
     osg::Matrixd _depthView, _depthProj, _shadeProj;
     unsigned int _depthVersion = 1;

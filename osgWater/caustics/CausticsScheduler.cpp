@@ -163,11 +163,11 @@ void CausticsScheduler::cull(PassId pass, osgUtil::CullVisitor& cv, const FrameF
     if (facts.reflectedCaustics) _reflected->cullPass(pass, cv);
 }
 
-double CausticsScheduler::getMilliseconds(PassId pass) const
+PassMeasure CausticsScheduler::getMeasure(PassId pass) const
 {
     Lock lock(_mutex);
-    if (!_caustics.valid()) return -1.0;
-    return pass == PASS_SUN_DEPTH ? _caustics->getDepthMilliseconds() : _caustics->getMilliseconds();
+    if (!_caustics.valid()) return PassMeasure();
+    return pass == PASS_SUN_DEPTH ? _caustics->getDepthMeasure() : _caustics->getMeasure();
 }
 
 void CausticsScheduler::report(ViewReport& r) const

@@ -52,9 +52,9 @@ public:
 
     //! How long, in simulation seconds, rendered caustics are reused while the waves move.
     double getHoldTime() const;
-    //! The passes' GPU times (PASS_SUN_DEPTH, PASS_PHOTONS: photons and gather), ms; negative
-    //! without passes.
-    double getMilliseconds(PassId pass) const;
+    //! The passes' GPU times and fragments (PASS_SUN_DEPTH, PASS_PHOTONS: photons and gather);
+    //! negative without passes.
+    PassMeasure getMeasure(PassId pass) const;
     //! The caustics' fields of a view report.
     void report(ViewReport& r) const;
     WaterSettings::CausticsGather getActiveGather() const;

@@ -28,12 +28,12 @@ ViewPasses::ViewPasses(osg::Group* scene, osg::StateSet* sceneState, osg::StateS
     _reflection = new ReflectionCamera(scene, sceneState, reflectionSize.x(), reflectionSize.y());
     _refraction = new RefractionCamera(scene, sceneState, refractionSize.x(), refractionSize.y());
     // the callbacks are set once, before any draw; setTimingEnabled() switches them on
-    _reflectionTimer = new GpuTimer;
-    _reflectionTimer->attach(_reflection.get());
-    _reflectionTimer->setEnabled(false);
-    _refractionTimer = new GpuTimer;
-    _refractionTimer->attach(_refraction.get());
-    _refractionTimer->setEnabled(false);
+    _reflectionMeter = new PassMeter;
+    _reflectionMeter->attach(_reflection.get());
+    _reflectionMeter->setEnabled(false);
+    _refractionMeter = new PassMeter;
+    _refractionMeter->attach(_refraction.get());
+    _refractionMeter->setEnabled(false);
     // changes every frame: OSG must not draw it while the next frame's cull writes
     _waterInputs = new osg::StateSet;
     _waterInputs->setName("osgWater.viewWaterInputs");
@@ -70,8 +70,8 @@ void ViewPasses::setTimingEnabled(bool on)
 {
     if (on == _timing) return; // called every frame
     _timing = on;
-    _reflectionTimer->setEnabled(on);
-    _refractionTimer->setEnabled(on);
+    _reflectionMeter->setEnabled(on);
+    _refractionMeter->setEnabled(on);
     if (_glow.valid()) _glow->setTimingEnabled(on);
 }
 

@@ -4,7 +4,7 @@
 
 #include "passes/ReflectionCamera.h"
 #include "passes/RefractionCamera.h"
-#include "frame/GpuTimer.h"
+#include "frame/PassMeter.h"
 #include "passes/GlowPasses.h"
 #include "frame/PassTable.h"
 #include "shaders/ProgramLibrary.h"
@@ -57,8 +57,8 @@ public:
     //! Measure the passes' GPU time (GL timer queries); read with the getters below.
     void setTimingEnabled(bool on);
     //! Last GPU time of each pass in ms (negative when not measured).
-    double getReflectionMilliseconds() const { return _reflectionTimer->getMilliseconds(); }
-    double getRefractionMilliseconds() const { return _refractionTimer->getMilliseconds(); }
+    PassMeasure getReflectionMeasure() const { return _reflectionMeter->getMeasure(); }
+    PassMeasure getRefractionMeasure() const { return _refractionMeter->getMeasure(); }
 
     void resizeGLObjectBuffers(unsigned int maxSize);
     void releaseGLObjects(osg::State* state) const;
@@ -71,7 +71,7 @@ protected:
     osg::ref_ptr<ReflectionCamera> _reflection;
     osg::ref_ptr<RefractionCamera> _refraction;
     osg::ref_ptr<osg::StateSet> _lighting, _waterInputs;
-    osg::ref_ptr<GpuTimer> _reflectionTimer, _refractionTimer;
+    osg::ref_ptr<PassMeter> _reflectionMeter, _refractionMeter;
     osg::ref_ptr<GlowPasses> _glow;
     PassPlan _plan;
     bool _timing = false, _eyeBelow = false;

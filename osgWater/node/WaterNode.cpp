@@ -33,7 +33,7 @@ void WaterNode::setPassTimingEnabled(bool on) { _impl->setPassTimingEnabled(on);
 bool WaterNode::getPassTimingEnabled() const { return _impl->_passTiming; }
 double WaterNode::getPassMilliseconds(osg::Camera* camera, PassId pass) const
 {
-    return _impl->getPassMilliseconds(camera, pass);
+    return _impl->getPassMeasure(camera, pass).milliseconds;
 }
 ViewReport WaterNode::getViewReport(osg::Camera* camera) const { return _impl->getViewReport(camera); }
 size_t WaterNode::getNumViews() const { return _impl->_views.size(); }

@@ -18,8 +18,8 @@ WaterNodeImpl::WaterNodeImpl(WaterNode& node)
       _caustics(node, _states)
 {
     _underwater = new UnderwaterView(_states.getPrograms());
-    _surfaceTimer = new GpuTimer;
-    _surfaceTimer->setEnabled(false);
+    _surfaceMeter = new PassMeter;
+    _surfaceMeter->setEnabled(false);
     refreshStates();
 }
 
@@ -32,7 +32,7 @@ WaterNodeImpl::WaterNodeImpl(WaterNode& node, const WaterNodeImpl& o, const osg:
       _caustics(node, _states)
 {
     _underwater = new UnderwaterView(_states.getPrograms());
-    _surfaceTimer = new GpuTimer;
+    _surfaceMeter = new PassMeter;
     setSkippingEnabled(o._skipping);
     setPassTimingEnabled(o._passTiming);
     _userEnvironment = o._userEnvironment; // the user's texture, shared like a child's
@@ -62,27 +62,27 @@ void WaterNodeImpl::setDebugOutput(DebugOutput d)
 void WaterNodeImpl::setPassTimingEnabled(bool on)
 {
     _passTiming = on;
-    _surfaceTimer->setEnabled(on);
+    _surfaceMeter->setEnabled(on);
     _underwater->setTimingEnabled(on);
     _caustics.setTimingEnabled(on);
 }
 
-double WaterNodeImpl::getPassMilliseconds(osg::Camera* camera, PassId pass) const
+PassMeasure WaterNodeImpl::getPassMeasure(osg::Camera* camera, PassId pass) const
 {
     const ViewPasses* p = _views.find(camera);
     const GlowPasses* glow = p ? p->getGlow() : nullptr;
     switch (pass) {
     case PASS_SUN_DEPTH:
-    case PASS_PHOTONS: return _passTiming ? _caustics.getMilliseconds(pass) : -1.0;
-    case PASS_REFLECTION: return p ? p->getReflectionMilliseconds() : -1.0;
-    case PASS_REFRACTION: return p ? p->getRefractionMilliseconds() : -1.0;
-    case PASS_GLOW_HIGHLIGHT: return glow ? glow->getHighlightMilliseconds() : -1.0;
-    case PASS_GLOW_BLUR_H: return glow ? glow->getBlurMilliseconds() : -1.0;
-    case PASS_GLOW_COMPOSITE: return glow ? glow->getCompositeMilliseconds() : -1.0;
-    case PASS_SURFACE: return _surfaceTimer->getMilliseconds();
-    case PASS_CAP: return _underwater->getCapMilliseconds();
-    case PASS_BACKDROP: return _underwater->getBackdropMilliseconds();
-    default: return -1.0;
+    case PASS_PHOTONS: return _passTiming ? _caustics.getMeasure(pass) : PassMeasure();
+    case PASS_REFLECTION: return p ? p->getReflectionMeasure() : PassMeasure();
+    case PASS_REFRACTION: return p ? p->getRefractionMeasure() : PassMeasure();
+    case PASS_GLOW_HIGHLIGHT: return glow ? glow->getHighlightMeasure() : PassMeasure();
+    case PASS_GLOW_BLUR_H: return glow ? glow->getBlurMeasure() : PassMeasure();
+    case PASS_GLOW_COMPOSITE: return glow ? glow->getCompositeMeasure() : PassMeasure();
+    case PASS_SURFACE: return _surfaceMeter->getMeasure();
+    case PASS_CAP: return _underwater->getCapMeasure();
+    case PASS_BACKDROP: return _underwater->getBackdropMeasure();
+    default: return PassMeasure();
     }
 }
 
@@ -90,7 +90,11 @@ ViewReport WaterNodeImpl::getViewReport(osg::Camera* camera) const
 {
     ViewReport r;
     _views.report(camera, r); // the plan, the view's own passes, under the map's lock
-    for (int i = 0; i < PASS_COUNT; ++i) r.milliseconds[i] = getPassMilliseconds(camera, PassId(i));
+    for (int i = 0; i < PASS_COUNT; ++i) {
+        const PassMeasure m = getPassMeasure(camera, PassId(i));
+        r.milliseconds[i] = m.milliseconds;
+        r.fragments[i] = m.fragments;
+    }
     _caustics.report(r);
     return r;
 }
@@ -102,14 +106,17 @@ WaterSettings::CausticsGather WaterNodeImpl::getActiveCausticsGather() const
 
 namespace {
 
-// the statistics' attribute names of each row, made once ("" for a row without a GPU time of its own)
+// the statistics' attribute names of each row, made once ("" for a row not measured on its own)
 struct PassStatNames {
-    std::string ran[PASS_COUNT], gpuMs[PASS_COUNT];
+    std::string ran[PASS_COUNT], gpuMs[PASS_COUNT], fragments[PASS_COUNT];
     PassStatNames()
     {
         for (int i = 0; i < PASS_COUNT; ++i) {
             ran[i] = std::string("osgWater ") + passRow(PassId(i)).name + " ran";
-            if (const char* label = gpuTimeLabel(PassId(i))) gpuMs[i] = std::string("osgWater ") + label + " GPU ms";
+            if (const char* label = gpuTimeLabel(PassId(i))) {
+                gpuMs[i] = std::string("osgWater ") + label + " GPU ms";
+                fragments[i] = std::string("osgWater ") + label + " fragments";
+            }
         }
     }
 };
@@ -124,8 +131,10 @@ void WaterNodeImpl::recordPassStats(osgUtil::CullVisitor& cv, const ViewFrame& v
     if (!stats) return;
     for (int i = 0; i < PASS_COUNT; ++i) {
         stats->setAttribute(v.frameNumber, names.ran[i], plan.runs(PassId(i)) ? 1.0 : 0.0);
-        const double ms = names.gpuMs[i].empty() ? -1.0 : getPassMilliseconds(cv.getCurrentCamera(), PassId(i));
-        if (ms >= 0.0) stats->setAttribute(v.frameNumber, names.gpuMs[i], ms);
+        if (names.gpuMs[i].empty()) continue;
+        const PassMeasure m = getPassMeasure(cv.getCurrentCamera(), PassId(i));
+        if (m.milliseconds >= 0.0) stats->setAttribute(v.frameNumber, names.gpuMs[i], m.milliseconds);
+        if (m.fragments >= 0.0) stats->setAttribute(v.frameNumber, names.fragments[i], m.fragments);
     }
 }
 
@@ -144,7 +153,7 @@ void WaterNodeImpl::refreshStates()
     _states.applySettings(*_settings, *_surface, _debug);
     _underwater->setWaveBand(_surface->getLevel(), _surface->usesGrid() ? _surface->getMaxAmplitude() : 0.0);
     // the grid is rebuilt when its size or resolution changes: time the one drawn now
-    if (_surface->usesGrid() && !_surface->getGeometry()->getDrawCallback()) _surfaceTimer->attach(_surface->getGeometry());
+    if (_surface->usesGrid() && !_surface->getGeometry()->getDrawCallback()) _surfaceMeter->attach(_surface->getGeometry());
     _appliedSettings = _settings.get();
     _appliedSurface = _surface.get();
     _settingsRevision = _settings->getRevision();

@@ -11,7 +11,7 @@
 #include "passes/UnderwaterView.h"
 #include "frame/PassTable.h"
 #include "frame/SceneLighting.h"
-#include "frame/GpuTimer.h"
+#include "frame/PassMeter.h"
 #include <atomic>
 #include <map>
 #include <set>
@@ -51,7 +51,7 @@ public:
     void setSurface(WaterSurface* surface);
     void setDebugOutput(DebugOutput d);
     void setPassTimingEnabled(bool on);
-    double getPassMilliseconds(osg::Camera* camera, PassId pass) const;
+    PassMeasure getPassMeasure(osg::Camera* camera, PassId pass) const;
     ViewReport getViewReport(osg::Camera* camera) const;
     void setSkippingEnabled(bool on);
     double getCausticsHoldTime() const;
@@ -112,7 +112,7 @@ public:
     osg::ref_ptr<WaterSurface> _surface;
     DebugOutput _debug;
     bool _passTiming = false;
-    osg::ref_ptr<GpuTimer> _surfaceTimer; // the grid's draw (a user mesh is the user's: not timed)
+    osg::ref_ptr<PassMeter> _surfaceMeter; // the grid's draw (a user mesh is the user's: not timed)
     bool _skipping = true;
     std::atomic<double> _simulationTime{ 0.0 };
     WaterStateSets _states;

@@ -99,12 +99,12 @@ GlowPasses::GlowPasses(osg::Group* scene, osg::StateSet* sceneState, osg::StateS
     c->setAttributeAndModes(_compositeScissor.get());
 
     // timed when the view's pass timing is on; the callbacks are set once, before any draw
-    _highlightTimer = new GpuTimer;
-    _highlightTimer->attach(_highlight.get());
-    _blurTimer = new GpuTimer;
-    _blurTimer->attach(_blur[0].get(), _blur[1].get());
-    _compositeTimer = new GpuTimer;
-    _compositeTimer->attach(_composite->getDrawable(0));
+    _highlightMeter = new PassMeter;
+    _highlightMeter->attach(_highlight.get());
+    _blurMeter = new PassMeter;
+    _blurMeter->attach(_blur[0].get(), _blur[1].get());
+    _compositeMeter = new PassMeter;
+    _compositeMeter->attach(_composite->getDrawable(0));
     setTimingEnabled(false);
     c->setDataVariance(osg::Object::DYNAMIC);
 }
@@ -294,7 +294,7 @@ void GlowPasses::update(const PassContext& ctx, WaterSurface* surface, const osg
 
 void GlowPasses::setTimingEnabled(bool on)
 {
-    for (GpuTimer* t : { _highlightTimer.get(), _blurTimer.get(), _compositeTimer.get() }) t->setEnabled(on);
+    for (PassMeter* t : { _highlightMeter.get(), _blurMeter.get(), _compositeMeter.get() }) t->setEnabled(on);
 }
 
 void GlowPasses::setBlurWeights(const std::vector<float>& w)

@@ -3,7 +3,7 @@
 #define OSGWATER_GLOWPASSES 1
 
 #include "frame/PassCamera.h"
-#include "frame/GpuTimer.h"
+#include "frame/PassMeter.h"
 #include <osgWater/WaterSurface>
 #include <osg/Geode>
 #include <osg/Scissor>
@@ -60,9 +60,9 @@ public:
 
     //! GPU times, ms (negative until measured or while timing is off): the highlight pass, the two
     //! blur passes together, the composite.
-    double getHighlightMilliseconds() const { return _highlightTimer->getMilliseconds(); }
-    double getBlurMilliseconds() const { return _blurTimer->getMilliseconds(); }
-    double getCompositeMilliseconds() const { return _compositeTimer->getMilliseconds(); }
+    PassMeasure getHighlightMeasure() const { return _highlightMeter->getMeasure(); }
+    PassMeasure getBlurMeasure() const { return _blurMeter->getMeasure(); }
+    PassMeasure getCompositeMeasure() const { return _compositeMeter->getMeasure(); }
     void setTimingEnabled(bool on);
 
     //! Gaussian weights w_0..w_r of a blur of half-width `radius` texels (sigma = radius / 2),
@@ -88,7 +88,7 @@ protected:
     osg::ref_ptr<DrawNodes> _highlightDraw;
     osg::ref_ptr<osg::Scissor> _blurScissor, _compositeScissor;
     osg::Vec4i _glowTexels;
-    osg::ref_ptr<GpuTimer> _highlightTimer, _blurTimer, _compositeTimer;
+    osg::ref_ptr<PassMeter> _highlightMeter, _blurMeter, _compositeMeter;
 };
 
 }

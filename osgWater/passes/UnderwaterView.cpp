@@ -21,9 +21,9 @@ public:
         const osg::State& state = *ri.getState();
         if (_owner->capNeeded(state.getModelViewMatrix(), state.getProjectionMatrix())) {
             ++_owner->_capDraws;
-            _owner->_capTimer->begin(ri);
+            _owner->_capMeter->begin(ri);
             drawable->drawImplementation(ri);
-            _owner->_capTimer->end(ri);
+            _owner->_capMeter->end(ri);
         } else {
             ++_owner->_capSkips;
         }
@@ -41,7 +41,7 @@ UnderwaterView::UnderwaterView(ProgramLibrary& programs)
     cap->setAttributeAndModes(new osg::Depth(osg::Depth::ALWAYS, 0.0, 1.0, false));
     cap->setMode(GL_CULL_FACE, osg::StateAttribute::OFF);
     setUpPassBin(cap, PASS_CAP);
-    _capTimer = new GpuTimer; // begun and ended by CapSkip when it draws
+    _capMeter = new PassMeter; // begun and ended by CapSkip when it draws
     _cap->getDrawable(0)->setDrawCallback(new CapSkip(this));
 
     // at the far plane, only where nothing was drawn (depth still clear)
@@ -52,15 +52,15 @@ UnderwaterView::UnderwaterView(ProgramLibrary& programs)
     bd->setAttributeAndModes(new osg::Depth(osg::Depth::LEQUAL, 0.0, 1.0, false));
     bd->setMode(GL_CULL_FACE, osg::StateAttribute::OFF);
     setUpPassBin(bd, PASS_BACKDROP);
-    _backdropTimer = new GpuTimer;
-    _backdropTimer->attach(_backdrop->getDrawable(0));
+    _backdropMeter = new PassMeter;
+    _backdropMeter->attach(_backdrop->getDrawable(0));
     setTimingEnabled(false);
 }
 
 void UnderwaterView::setTimingEnabled(bool on)
 {
-    _capTimer->setEnabled(on);
-    _backdropTimer->setEnabled(on);
+    _capMeter->setEnabled(on);
+    _backdropMeter->setEnabled(on);
 }
 
 void UnderwaterView::setWaveBand(double level, double waveBound)

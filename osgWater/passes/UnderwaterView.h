@@ -4,7 +4,7 @@
 
 #include <osgWater/Export>
 #include <osg/Geode>
-#include "frame/GpuTimer.h"
+#include "frame/PassMeter.h"
 #include <atomic>
 
 namespace osgWater {
@@ -36,8 +36,8 @@ public:
     unsigned int getCapDraws() const { return _capDraws.load(); }
 
     //! GPU times of the cap and the backdrop, ms (negative until measured or while timing is off).
-    double getCapMilliseconds() const { return _capTimer->getMilliseconds(); }
-    double getBackdropMilliseconds() const { return _backdropTimer->getMilliseconds(); }
+    PassMeasure getCapMeasure() const { return _capMeter->getMeasure(); }
+    PassMeasure getBackdropMeasure() const { return _backdropMeter->getMeasure(); }
     void setTimingEnabled(bool on);
 
     void resizeGLObjectBuffers(unsigned int maxSize);
@@ -48,7 +48,7 @@ protected:
     class CapSkip;
     bool capNeeded(const osg::Matrixd& modelView, const osg::Matrixd& projection) const;
     osg::ref_ptr<osg::Geode> _cap, _backdrop;
-    osg::ref_ptr<GpuTimer> _capTimer, _backdropTimer;
+    osg::ref_ptr<PassMeter> _capMeter, _backdropMeter;
     std::atomic<double> _level{ 0.0 }, _waveBound{ 0.0 };
     std::atomic<bool> _skipping{ true };
     mutable std::atomic<unsigned int> _capSkips{ 0 }, _capDraws{ 0 };
