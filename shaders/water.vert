@@ -21,8 +21,8 @@ const float kRingSegments = 128.0;   // WaterSurface::RING_SEGMENTS
 const float kRingInnerHeight = 0.01; // WaterSurface::RING_INNER_HEIGHT
 
 // gl_Vertex: ring i of the rings evenly spaced out to the square's corners (WaterSurface::buildRings);
-// `cell`: the size of its cells
-vec4 ringVertex(out float cell)
+// `cell`: the size of its cells, `diagonal`: their triangles' longest side
+vec4 ringVertex(out float cell, out float diagonal)
 {
     vec2 centre = 0.5 * (osgWater_SurfaceSquare.xy + osgWater_SurfaceSquare.zw);
     vec2 fromCentre = gl_Vertex.xy - centre;
@@ -33,9 +33,13 @@ vec4 ringVertex(out float cell)
     vec2 c = osgWater_EyeLocal.xy;
     float h = max(abs(osgWater_EyeLocal.z - osgWater_Level), kRingInnerHeight);
     vec2 far = max(abs(c - osgWater_SurfaceSquare.xy), abs(c - osgWater_SurfaceSquare.zw));
-    float growth = asinh(length(far) / h) / kRingCount;
+    // (never thinner radially than a cell is wide: see WaterSurface::MESH_EYE_RINGS)
+    float growth = max(asinh(length(far) / h) / kRingCount, 6.2831853 / kRingSegments);
     float r = h * sinh(growth * i);
-    cell = max(growth * sqrt(r * r + h * h), 6.2831853 * r / kRingSegments);
+    // the cell: its radial span, the larger; its triangles' longest side is its diagonal
+    cell = growth * sqrt(r * r + h * h);
+    float around = 6.2831853 * r / kRingSegments;
+    diagonal = sqrt(cell * cell + around * around);
     // pulled onto the square: a triangle of clamped vertices lies inside it, and the rings, which
     // reach past it, still cover all of it (no discard off the square, which would keep a GPU from
     // testing depth before shading)
@@ -49,9 +53,9 @@ void main()
     vec4 v = gl_Vertex;
     vDrawnError = 0.0;
 #if defined(OSGWATER_RINGS)
-    float cell;
-    v = ringVertex(cell);
-    vDrawnError = waterDrawnErrorBound(cell, true);
+    float cell, diagonal;
+    v = ringVertex(cell, diagonal);
+    vDrawnError = waterDrawnErrorBound(cell, diagonal, true);
 #elif defined(OSGWATER_GRID)
     v.z = waterHeight(v.xy);
     vDrawnError = waterDrawnErrorBound(osgWater_GridCell, false);

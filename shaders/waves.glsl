@@ -140,16 +140,16 @@ vec4 waterSlopesAndRoughness(vec2 p)
     return waterSampleWithRoughness(p, waterFootprint);
 }
 
-// How far a mesh whose cells are `cell` metres across can lie from the surface: each cascade
-// taken as one wave as high as its height bound and as short as its band's shortest, faded (or
-// cut into chords) as the sum of sines' waves are. Choppy, a chord spans more of the undisplaced
-// wave where a crest is squeezed (osgWater_ChoppyChord times as much at most).
-float waterDrawnErrorBound(float cell, bool faded)
+// How far a mesh whose cells are `cell` metres across, with triangle sides up to `chord`, can lie
+// from the surface: each cascade taken as one wave as high as its height bound and as short as its
+// band's shortest, faded (or cut into chords) as the sum of sines' waves are. Choppy, a chord spans
+// more of the undisplaced wave where a crest is squeezed (osgWater_ChoppyChord times as much at most).
+float waterDrawnErrorBound(float cell, float side, bool faded)
 {
 #ifdef OSGWATER_CHOPPY
-    float chord = cell * osgWater_ChoppyChord;
+    float chord = side * osgWater_ChoppyChord;
 #else
-    float chord = cell;
+    float chord = side;
 #endif
     float e = 0.0;
     for (int c = 0; c < 5; ++c) {
@@ -217,11 +217,11 @@ vec3 waterHeightAndSlope(vec2 p)
     return r;
 }
 
-// How far a mesh whose cells are `cell` metres across can lie from the analytic surface: per wave,
-// what its fade leaves out (`faded`: the vertices at waterHeightDrawn, else at waterHeight) and the
-// sag of a chord between vertices, a (1 - cos(pi cell / wavelength)), at most 2a for a wave the
-// cells alias.
-float waterDrawnErrorBound(float cell, bool faded)
+// How far a mesh whose cells are `cell` metres across, with triangle sides up to `chord`, can lie
+// from the analytic surface: per wave, what its fade leaves out (`faded`: the vertices at
+// waterHeightDrawn, else at waterHeight) and the sag of a chord between vertices,
+// a (1 - cos(pi chord / wavelength)), at most 2a for a wave the chords alias.
+float waterDrawnErrorBound(float cell, float chord, bool faded)
 {
     float e = 0.0;
     for (int i = 0; i < 8; ++i) {
@@ -229,7 +229,7 @@ float waterDrawnErrorBound(float cell, bool faded)
         vec4 w = osgWater_Waves[i];
         float cellsPerWave = waterCellsPerWave(w, cell);
         float keep = faded ? smoothstep(2.0, 4.0, cellsPerWave) : 1.0;
-        e += abs(w.z) * (1.0 - keep * cos(3.1415927 * min(1.0 / cellsPerWave, 1.0)));
+        e += abs(w.z) * (1.0 - keep * cos(3.1415927 * min(chord / (cell * cellsPerWave), 1.0)));
     }
     return e;
 }
@@ -251,6 +251,13 @@ vec3 waterNormal(vec2 p)
     return normalize(vec3(-g, 1.0));
 }
 #endif
+
+// The same for a mesh whose triangles' sides are no longer than its cells (the uniform grid's:
+// its diagonals, a sqrt 2 longer, the thesis's grid has always taken as the side).
+float waterDrawnErrorBound(float cell, bool faded)
+{
+    return waterDrawnErrorBound(cell, cell, faded);
+}
 
 // Where the line P + t D meets the waves, by one Newton step on f = z - h from P: the t of the
 // step. hs: (h, dh/dx, dh/dy) at P.xy. A line along the surface (f' = 0) does not move.

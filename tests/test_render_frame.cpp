@@ -304,3 +304,35 @@ TEST(RenderFrame, ThePassesCountTheFragmentsTheyShade)
     h.frame(2.0);
     EXPECT_LT(water->getViewReport(h.camera()).fragments[PASS_REFRACTION], 0.0) << "off: nothing counted";
 }
+
+// The surface pass's work per water pixel: the rings around the eye are never thinner than their
+// cells are wide, so far away, at a grazing angle, fewer rings are slivers of a pixel that a
+// rasteriser shades whole 4x4 blocks for, once per sliver. In the demo's view at 640 x 480 that is
+// 2.3 fragments a water pixel; rings as thin as the reach allows (256 to the far corner) shade
+// 3.7, and fail the bound.
+TEST(RenderFrame, TheSurfaceShadesFewBlocksPerWaterPixel)
+{
+    Harness h(640, 480);
+    REQUIRE_GL(h);
+    osg::ref_ptr<WaterNode> water = new WaterNode;
+    water->getSurface()->setSize(140.0f);
+    water->getSettings()->setCausticsEnabled(false);
+    water->getSettings()->setGlowEnabled(false);
+    water->addChild(checkerPlane(-2.0f, 200.0f, 1.0f));
+    water->setPassTimingEnabled(true);
+    water->setDebugOutput(DEBUG_SURFACE); // alpha 2 where the surface was shaded
+    h.setScene(water.get());
+    h.lookAt(osg::Vec3d(0, -42, 4.5), osg::Vec3d(0, 10, -1)); // the demo's view
+    osg::ref_ptr<osg::Image> img;
+    for (int i = 0; i < 4; ++i) {
+        h.frame(1.0 + i / 60.0);
+        img = h.readColor();
+    }
+    int waterPixels = 0;
+    for (int y = 0; y < h.height(); ++y)
+        for (int x = 0; x < h.width(); ++x) waterPixels += pixel(img.get(), x, y)[3] == 2.0f;
+    ASSERT_GT(waterPixels, h.width() * h.height() / 3) << "the water fills the lower part of the view";
+    const double fragments = water->getViewReport(h.camera()).fragments[PASS_SURFACE];
+    EXPECT_GE(fragments, double(waterPixels));
+    EXPECT_LE(fragments, 2.5 * waterPixels);
+}

@@ -56,16 +56,22 @@ TEST(Surface, TheDefaultLayoutIsRingsAroundTheEye)
 }
 
 // each ring spans the same angle from the eye, at any height: the cell, over its distance from
-// the eye, is never more than the larger of the radial growth c and the angle between segments
+// the eye, is the radial growth c, which is the larger of what takes the last ring to the reach
+// and the angle between segments (a ring is never thinner than its cells are wide: past the reach,
+// the square's edge holds the rest)
 TEST(Surface, EveryRingCellSpansAboutTheSameAngleFromTheEye)
 {
     for (double height : { 0.0, 1e-6, 0.5, 4.5, 48.0, 500.0 })
         for (double reach : { 5.0, 99.0, 3000.0 }) {
             const double h = std::max(height, WaterSurface::RING_INNER_HEIGHT);
-            const double c = std::asinh(reach / h) / WaterSurface::RING_COUNT;
             const double around = 2.0 * osg::PI / WaterSurface::RING_SEGMENTS;
+            const double c = std::max(std::asinh(reach / h) / WaterSurface::RING_COUNT, around);
             EXPECT_DOUBLE_EQ(WaterSurface::ringRadius(0, height, reach), 0.0);
-            EXPECT_NEAR(WaterSurface::ringRadius(WaterSurface::RING_COUNT, height, reach), reach, 1e-9 * reach);
+            EXPECT_GE(WaterSurface::ringRadius(WaterSurface::RING_COUNT, height, reach), reach * (1.0 - 1e-9));
+            if (std::asinh(reach / h) / WaterSurface::RING_COUNT >= around) // the last ring is the reach
+                EXPECT_NEAR(WaterSurface::ringRadius(WaterSurface::RING_COUNT, height, reach), reach, 1e-9 * reach);
+            else // the rings in use end at the first past the reach
+                EXPECT_LT(WaterSurface::ringRadius(unsigned(std::ceil(std::asinh(reach / h) / c)) - 1, height, reach), reach);
             double last = -1.0;
             for (unsigned int i = 0; i <= WaterSurface::RING_COUNT; ++i) {
                 const double r = WaterSurface::ringRadius(i, height, reach);
@@ -73,8 +79,8 @@ TEST(Surface, EveryRingCellSpansAboutTheSameAngleFromTheEye)
                 last = r;
                 const double distance = std::sqrt(r * r + h * h);
                 const double angle = WaterSurface::ringCellSize(i, height, reach) / distance;
-                EXPECT_LE(angle, std::max(c, around) * (1.0 + 1e-9)) << height << " " << reach << " " << i;
-                EXPECT_GE(angle, c * (1.0 - 1e-9));
+                EXPECT_NEAR(angle, c, 1e-9 * c) << height << " " << reach << " " << i;
+                EXPECT_GE(angle, around * (1.0 - 1e-9));
                 if (i + 1 <= WaterSurface::RING_COUNT) // the next ring is one radial cell out (to first order)
                     EXPECT_NEAR(WaterSurface::ringRadius(i + 1, height, reach) - r, c * distance, 0.05 * c * distance + 1e-12);
             }

@@ -174,12 +174,14 @@ bool WaterSurface::meshLayoutFromName(const std::string& name, MeshLayout& layou
 }
 
 namespace {
-// the rings' height H (at least RING_INNER_HEIGHT) and growth c for an eye and a reach
+// the rings' height H (at least RING_INNER_HEIGHT) and growth c for an eye and a reach: the
+// growth that takes the last ring to the reach, or the angle between segments where that is more
 struct RingScale {
     double h, c;
     RingScale(double eyeHeight, double reach)
         : h(std::max(std::fabs(eyeHeight), WaterSurface::RING_INNER_HEIGHT)),
-          c(std::asinh(std::max(reach, 0.0) / h) / WaterSurface::RING_COUNT) {}
+          c(std::max(std::asinh(std::max(reach, 0.0) / h) / WaterSurface::RING_COUNT,
+                     2.0 * osg::PI / WaterSurface::RING_SEGMENTS)) {}
     double radius(unsigned int i) const { return h * std::sinh(c * std::min(i, WaterSurface::RING_COUNT)); }
 };
 }
@@ -192,10 +194,11 @@ double WaterSurface::ringRadius(unsigned int i, double eyeHeight, double reach)
 double WaterSurface::ringCellSize(unsigned int i, double eyeHeight, double reach)
 {
     // dr/di = H c cosh(c i) = c sqrt(r^2 + H^2): radially each ring spans the angle c from an eye
-    // at height H; around, a cell spans 2 pi r / RING_SEGMENTS
+    // at height H; around, a cell spans 2 pi r / RING_SEGMENTS, which is never more (c is at least
+    // 2 pi / RING_SEGMENTS and r at most sqrt(r^2 + H^2))
     const RingScale ring(eyeHeight, reach);
-    const double h = ring.h, c = ring.c, r = ring.radius(i);
-    return std::max(c * std::sqrt(r * r + h * h), kTwoPi * r / RING_SEGMENTS);
+    const double r = ring.radius(i);
+    return ring.c * std::sqrt(r * r + ring.h * ring.h);
 }
 
 double WaterSurface::ringWaveFade(double wavelength, double cellSize)
