@@ -144,12 +144,12 @@ vec4 waterSlopesAndRoughness(vec2 p)
 // from the surface: each cascade taken as one wave as high as its height bound and as short as its
 // band's shortest, faded (or cut into chords) as the sum of sines' waves are. Choppy, a chord spans
 // more of the undisplaced wave where a crest is squeezed (osgWater_ChoppyChord times as much at most).
-float waterDrawnErrorBound(float cell, float side, bool faded)
+float waterDrawnErrorBound(float cell, float chord, bool faded)
 {
 #ifdef OSGWATER_CHOPPY
-    float chord = side * osgWater_ChoppyChord;
+    float span = chord * osgWater_ChoppyChord;
 #else
-    float chord = side;
+    float span = chord;
 #endif
     float e = 0.0;
     for (int c = 0; c < 5; ++c) {
@@ -157,7 +157,7 @@ float waterDrawnErrorBound(float cell, float side, bool faded)
         vec4 s = osgWater_Cascades[c];
         float cellsPerWave = 6.2831853 / (max(s.z, 1e-9) * cell);
         float keep = faded ? smoothstep(2.0, 4.0, cellsPerWave) : 1.0;
-        e += s.y * (1.0 - keep * cos(3.1415927 * min(chord * max(s.z, 1e-9) / 6.2831853, 1.0)));
+        e += s.y * (1.0 - keep * cos(3.1415927 * min(span * max(s.z, 1e-9) / 6.2831853, 1.0)));
     }
     return e;
 }

@@ -106,9 +106,8 @@ void PassMeter::detach(osg::Camera* camera)
     camera->setFinalDrawCallback(nullptr);
 }
 
-void PassMeter::readLastFrame(osg::GLExtensions& ext, unsigned int contextID)
+void PassMeter::readLastFrame(osg::GLExtensions& ext, Query& q)
 {
-    Query& q = _queries[contextID];
     GLint available = 0;
     ext.glGetQueryObjectiv(q.ids[1], GL_QUERY_RESULT_AVAILABLE, &available);
     if (available && q.counted) ext.glGetQueryObjectiv(q.ids[2], GL_QUERY_RESULT_AVAILABLE, &available);
@@ -139,7 +138,7 @@ void PassMeter::begin(osg::RenderInfo& ri)
     }
     if (q.ids[0] == 0) ext->glGenQueries(3, q.ids);
     if (q.pending) {
-        readLastFrame(*ext, contextID);
+        readLastFrame(*ext, q);
         if (q.pending) return; // last frame's results not there yet: skip this frame's measurement
     }
     ext->glQueryCounter(q.ids[0], GL_TIMESTAMP);

@@ -52,7 +52,6 @@ public:
 
 protected:
     virtual ~PassMeter() {}
-    void readLastFrame(osg::GLExtensions& ext, unsigned int contextID);
     std::atomic<double> _ms, _fragments;
     std::atomic<bool> _enabled{ true };
     // per context (the caustics' meter is drawn by every context that renders them, each in its
@@ -66,6 +65,8 @@ protected:
         bool failed = false;   // no timer queries
     };
     osg::buffered_object<Query> _queries;
+    //! The results of the queries `q` ended, where they are in (else `q` stays pending).
+    void readLastFrame(osg::GLExtensions& ext, Query& q);
 };
 
 }
