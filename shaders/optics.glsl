@@ -169,6 +169,19 @@ float owPassEyeZ(owDepthPass pass, vec2 tc, float d)
     return e.z / e.w;
 }
 
+// How many depth reads the searches made on this fragment (the work debug output counts them)
+int owDepthReads = 0;
+
+// How close a search's candidate must come to the surface point A it sees for the pass's camera to
+// see them at most `texels` apart (the settings' ErrorBudget): that many of the texels' heights at
+// A's depth, which grow with the distance for a perspective camera and not for an orthographic one.
+// Mirrored in osgWater::optics::SearchTolerance.
+float owTexelTolerance(mat4 proj, sampler2D depthTex, vec3 A, float texels)
+{
+    float w = proj[2][3] * A.z + proj[3][3];
+    return texels * 2.0 * w / (proj[1][1] * float(textureSize(depthTex, 0).y));
+}
+
 // A: the first surface on the pass camera's ray through P; false for sky (the cleared depth), a
 // surface under the pass's floor plane, or a point off the texture where the pass says so. Camera
 // rays meet at the eye (A = P Z / P.z), or are parallel to -Z when the includer defines
@@ -181,6 +194,7 @@ bool owSurfaceAlongRay(sampler2D depthTex, owDepthPass pass, vec3 P, out vec3 A)
     if (pass.offTextureSky && !(all(greaterThanEqual(tc, vec2(0.0))) && all(lessThanEqual(tc, vec2(1.0)))))
         return false;
     float d = texture(depthTex, tc).r;
+    ++owDepthReads;
     // only the cleared depth is sky: a sky dome drawn just inside the far plane is a surface
     if (d >= 1.0) return false;
     float Z = owPassEyeZ(pass, tc, d);
@@ -228,9 +242,9 @@ float owFrustumExit(mat4 proj, vec3 P, vec3 R)
 // line of sight sees no surface, t_1 comes from what the pass sees along R from its eye (the ray's
 // far end), and there is none when that sees none either. Where the pass's texture ends, so does
 // the search: the candidates go no further than where the ray leaves it. No candidate within
-// `tolerance` + 1% of its distance: the root's estimate in its bracket when there is one, else the
+// `budget` (texels, owTexelTolerance) + 1% of its distance: the root's estimate in its bracket when there is one, else the
 // ray went on past everything: none.
-owBottomHit owMirrorSearch(sampler2D depthTex, owDepthPass pass, vec3 U, vec3 R, int steps, float tolerance)
+owBottomHit owMirrorSearch(sampler2D depthTex, owDepthPass pass, vec3 U, vec3 R, int steps, float budget)
 {
     owBottomHit none = owBottomHit(false, U, U, 0.0);
     vec3 A;
@@ -252,7 +266,7 @@ owBottomHit owMirrorSearch(sampler2D depthTex, owDepthPass pass, vec3 U, vec3 R,
             f = W.z - A.z;
             float e = length(A - W);
             if (e < best.error) { best.W = W; best.A = A; best.error = e; }
-            if (e < tolerance) break;
+            if (e < owTexelTolerance(pass.proj, depthTex, A, budget)) break;
         }
         float tPrev = tLo, fPrev = fLo;
         // Illinois: an end kept twice in a row has its value halved, so the other end moves too
@@ -264,7 +278,7 @@ owBottomHit owMirrorSearch(sampler2D depthTex, owDepthPass pass, vec3 U, vec3 R,
         } else // bracketed: regula falsi (bisection next to the sky)
             t = fLo < 1e29 ? tLo + (tHi - tLo) * fLo / (fLo - fHi) : 0.5 * (tLo + tHi);
     }
-    if (best.error <= tolerance + 0.01 * length(best.W - U)) return best;
+    if (best.error <= owTexelTolerance(pass.proj, depthTex, best.A, budget) + 0.01 * length(best.W - U)) return best;
     if (tHi < 0.0) return none;
     best.W = U + t * R; // the root's best estimate in its bracket
     best.A = best.W;
@@ -306,11 +320,11 @@ owBottomHit owOneStepSearch(vec3 U, vec3 R, float scale, float maxDv)
 }
 
 // Thesis §7.1: candidates W_1..W_steps, keep the one with the smallest |A - W|; stop early once
-// a candidate is within `tolerance` of its bottom point.
+// a candidate is within `budget` texels of its bottom point (owTexelTolerance).
 // A candidate whose camera ray sees sky (it went under a clipped shore, or off the texture) is
 // no bottom: the next candidate is half way back towards U. If no candidate sees a bottom, A_1
 // (the bottom straight behind U, no refraction offset) is the answer: better than none.
-owBottomHit owIterativeSearch(vec3 U, vec3 R, int steps, float tolerance)
+owBottomHit owIterativeSearch(vec3 U, vec3 R, int steps, float budget)
 {
     owBottomHit best = owBottomHit(false, U, U, 0.0);
     vec3 Aprev;
@@ -323,7 +337,7 @@ owBottomHit owIterativeSearch(vec3 U, vec3 R, int steps, float tolerance)
         if (!owBottomAlongRay(W, A)) { W = 0.5 * (U + W); continue; }
         float e = length(A - W);
         if (e < best.error) { best.W = W; best.A = A; best.error = e; }
-        if (i == steps || e < tolerance) break; // converged: saves the remaining lookups
+        if (i == steps || e < owTexelTolerance(osgWater_RefractionProj, osgWater_RefractionDepth, A, budget)) break; // converged: saves the remaining lookups
         vec3 Wn;
         vec3 Q = A - Aprev;
         bool ok = owLineIntersection(U, R, Aprev, Q, Wn)

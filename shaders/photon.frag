@@ -26,7 +26,7 @@ uniform vec2 osgWater_IOR;              // (air, water)
 uniform float osgWater_PhotonExtinction; // the green channel's sun extinction (the thesis's k)
 uniform float osgWater_FresnelQ;
 uniform int osgWater_SearchSteps;
-uniform float osgWater_SearchTolerance;
+uniform float osgWater_ErrorBudget;
 #ifdef OSGWATER_REFLECTED_PHOTONS
 uniform mat4 osgWater_MirrorEye; // the mirror in the water plane, in this camera's eye space
 #endif
@@ -87,7 +87,7 @@ void main()
     vec3 T = refract(-L, N, osgWater_IOR.x / osgWater_IOR.y);
 #endif
     vec4 photon = vec4(0.0);              // alpha 0: no photon
-    owBottomHit hit = owIterativeSearch(start, T, osgWater_SearchSteps, osgWater_SearchTolerance);
+    owBottomHit hit = owIterativeSearch(start, T, osgWater_SearchSteps, osgWater_ErrorBudget);
     vec2 tc;
     if (dot(T, T) > 0.5 && hit.valid && owRefractionTexCoord(hit.W, tc)) {
         float F = owFresnel(cosL, osgWater_IOR.x, osgWater_IOR.y, osgWater_FresnelQ);

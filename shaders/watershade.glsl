@@ -31,7 +31,7 @@ uniform vec3 osgWater_Extinction;           // k per channel (the thesis model: 
 uniform float osgWater_FresnelQ;            // q
 uniform float osgWater_ReflectionScale;     // c
 uniform int osgWater_SearchSteps;
-uniform float osgWater_SearchTolerance;    // metres
+uniform float osgWater_ErrorBudget;         // texels of the texture a search reads
 uniform vec2 osgWater_OneStep;              // (dv scale, dv max)
 uniform float osgWater_UnderwaterScale;     // m of eq. 13, 15
 uniform vec2 osgWater_LookupPlanes;         // plane-offset lookups: (height above the level, depth below it)
@@ -124,9 +124,9 @@ owBottomHit owRefractionSearch(vec3 u1, vec3 R1)
 {
 #if defined(OSGWATER_REFRACTION) && OSGWATER_REFRACTION == OSGWATER_REFRACTION_BRACKETED
     return owMirrorSearch(osgWater_RefractionDepth, owRefractionPass(), u1, R1, osgWater_SearchSteps,
-                          osgWater_SearchTolerance);
+                          osgWater_ErrorBudget);
 #else
-    return owIterativeSearch(u1, R1, osgWater_SearchSteps, osgWater_SearchTolerance);
+    return owIterativeSearch(u1, R1, osgWater_SearchSteps, osgWater_ErrorBudget);
 #endif
 }
 
@@ -225,7 +225,7 @@ vec4 owReflectionLookupPoint(vec3 U, vec3 Rr, bool below)
                     + vec4(0.0, 0.0, 0.0, 1e-3);
     owDepthPass pass = owDepthPass(osgWater_ReflectionProj, osgWater_ReflectionInvProj, floorPlane, true);
     owBottomHit hit = owMirrorSearch(osgWater_ReflectionDepth, pass, u1, R1, osgWater_SearchSteps,
-                                     osgWater_SearchTolerance);
+                                     osgWater_ErrorBudget);
     return hit.valid ? vec4((osgWater_ReflectionViewInverse * vec4(hit.W, 1.0)).xyz, 1.0) : vec4(Rr, 0.0);
 #else
 #if defined(OSGWATER_REFLECTION) && OSGWATER_REFLECTION == OSGWATER_REFLECTION_PLANE
@@ -278,7 +278,9 @@ vec3 owShadeWater(vec3 U, vec3 Nup, vec3 E, float roughness, out vec4 debugOut)
 #endif
 
     // reflection, eq. 6 / 15 (under water the reflection pass already holds the water's tint)
+    int readsBefore = owDepthReads;
     vec4 reflP = owReflectionLookupPoint(U, Rr, below);
+    int reflectionReads = owDepthReads - readsBefore;
     vec4 debugRefl = vec4(reflP.xyz, reflP.w > 0.5 ? 2.0 : 3.0);
     // the surroundings above the water, for reflections seen from above
 #if defined(OSGWATER_ENVIRONMENT) && !defined(OSGWATER_EYE_BELOW)
@@ -319,6 +321,8 @@ vec3 owShadeWater(vec3 U, vec3 Nup, vec3 E, float roughness, out vec4 debugOut)
     debugOut = debugRefl;
 #elif defined(OSGWATER_DEBUG) && OSGWATER_DEBUG == OSGWATER_DEBUG_FRESNEL
     debugOut = vec4(F, 0.0, 0.0, 2.0);
+#elif defined(OSGWATER_DEBUG) && OSGWATER_DEBUG == OSGWATER_DEBUG_WORK
+    debugOut = vec4(float(owDepthReads - readsBefore - reflectionReads), float(reflectionReads), 0.0, 2.0);
 #else
     debugOut = debugHit;
 #endif
@@ -334,7 +338,7 @@ vec3 owShadeWater(vec3 U, vec3 Nup, vec3 E, float roughness, out vec4 debugOut)
 // found from): its colour (linear light, encoded for display: the water is drawn in the view
 // itself), or the debug output (OSGWATER_DEBUG 4: the analytic surface under U;
 // 5: the drawn point; 6: the slopes and the roughness there; else what owShadeWater reported), the
-// same for the surface and the cap.
+// same for the surface and the cap (the work's b: the march's evaluations, waves.glsl's count).
 vec4 owWaterFragment(vec3 U, vec3 drawn, vec3 color, vec4 debugHit)
 {
 #if defined(OSGWATER_DEBUG) && OSGWATER_DEBUG == OSGWATER_DEBUG_SURFACE
@@ -351,6 +355,8 @@ vec4 owWaterFragment(vec3 U, vec3 drawn, vec3 color, vec4 debugHit)
 #else
     return vec4(0.0, 0.0, 0.0, -1.0); // a user's mesh: its normals, no slopes of waves
 #endif
+#elif defined(OSGWATER_DEBUG) && OSGWATER_DEBUG == OSGWATER_DEBUG_WORK
+    return vec4(debugHit.rg, float(waterHeightReads), 2.0);
 #elif defined(OSGWATER_DEBUG)
     return debugHit;
 #else

@@ -288,8 +288,12 @@ const int kSightSamples = 4;
 #endif
 const int kSightRefinements = 3;
 
+// How many heights the march evaluated on this fragment (the work debug output counts them)
+int waterHeightReads = 0;
+
 float waterAbove(vec3 C, vec3 D, float t, float eyeSide)
 {
+    ++waterHeightReads;
     vec3 P = C + t * D;
     return eyeSide * (P.z - waterHeight(P.xy));
 }

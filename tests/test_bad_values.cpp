@@ -54,7 +54,7 @@ std::vector<FloatSetting> floatSettings()
         SETTING("reflectionPlaneHeight", setReflectionPlaneHeight, getReflectionPlaneHeight, 0.0f, 10000.0f),
         SETTING("refractionPlaneDepth", setRefractionPlaneDepth, getRefractionPlaneDepth, 0.0f, 10000.0f),
         SETTING("reflectionScale", setReflectionScale, getReflectionScale, 0.0f, 1000.0f),
-        SETTING("searchTolerance", setSearchTolerance, getSearchTolerance, 0.0f, 10.0f),
+        SETTING("errorBudget", setErrorBudget, getErrorBudget, 1.0f / 64.0f, 16.0f),
         SETTING("oneStepScale", setOneStepScale, getOneStepScale, 0.0f, 100.0f),
         SETTING("oneStepMaxDepth", setOneStepMaxDepth, getOneStepMaxDepth, 0.0f, 1.0e4f),
         SETTING("underwaterLookupScale", setUnderwaterLookupScale, getUnderwaterLookupScale, 0.0f, 1000.0f),

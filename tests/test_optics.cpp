@@ -568,19 +568,99 @@ TEST(Optics, ToleranceStopsTheSearchEarlyWithoutLosingAccuracy)
     // planar bottom: W_2 is already exact, so a 1 cm tolerance saves the later lookups
     const glm::vec3 up(0.0f, 0.8f, 0.6f);
     FlatBottom bottom{ up, -5.0f };
-    int lookups = 0;
-    DepthLookup counting = [&](const glm::vec3& P) { ++lookups; return bottom(P); };
+    DepthLookup lookup = std::cref(bottom);
     const glm::vec3 ray = glm::normalize(glm::vec3(0.1f, -0.3f, -1.0f));
     const glm::vec3 U = (-3.0f / glm::dot(up, ray)) * ray;
     const glm::vec3 R = refract(ray, up, kAir / kWater);
-    const BottomHit all = iterativeSearch(U, R, 8, counting, 0.0f);
-    const int allLookups = lookups;
-    lookups = 0;
-    const BottomHit early = iterativeSearch(U, R, 8, counting, 0.01f);
+    int allLookups = 0, lookups = 0;
+    const BottomHit all = iterativeSearch(U, R, 8, lookup, 0.0f, &allLookups);
+    const BottomHit early = iterativeSearch(U, R, 8, lookup, 0.01f, &lookups);
     EXPECT_EQ(allLookups, 9);
     EXPECT_LE(lookups, 3);
     EXPECT_LT(early.error, 0.01f);
     EXPECT_NEAR(glm::length(early.W - all.W), 0.0f, 0.01f);
+}
+
+// A budget in texels is the length a pass's camera sees as that many texels across its line of
+// sight: at twice the distance twice as long for a perspective camera, the same for an
+// orthographic one; worked from the projection's definition, not the kit's matrices
+TEST(Optics, ABudgetInTexelsIsTheLengthTheCameraSeesAsThatManyTexels)
+{
+    const float fovy = glm::radians(60.0f);
+    const int texels = 512;
+    const glm::mat4 perspective = glm::perspective(fovy, 1.0f, 0.5f, 500.0f);
+    const SearchTolerance p = SearchTolerance::ofTexels(perspective, texels, 0.25f);
+    for (float z : { -2.0f, -10.0f, -80.0f }) {
+        const float texelHeight = 2.0f * std::tan(0.5f * fovy) * -z / float(texels); // the frustum's height over its texels
+        EXPECT_NEAR(p.at(glm::vec3(0.0f, 0.0f, z)), 0.25f * texelHeight, 1e-5f * -z) << z;
+    }
+    const glm::mat4 ortho = glm::ortho(-20.0f, 20.0f, -20.0f, 20.0f, 0.0f, 100.0f);
+    const SearchTolerance o = SearchTolerance::ofTexels(ortho, texels, 2.0f);
+    for (float z : { -2.0f, -80.0f })
+        EXPECT_NEAR(o.at(glm::vec3(0.0f, 0.0f, z)), 2.0f * 40.0f / float(texels), 1e-6f) << z;
+}
+
+// A boulder for the mirror search's budget: a sphere seen by a camera at the origin of its eye
+// space; its curve makes the search close in on a hit step by step (on a plane it lands at once)
+struct Boulder {
+    glm::vec3 centre;
+    float radius;
+    // the first hit of o + t d, t > 0
+    bool hit(const glm::vec3& o, const glm::vec3& d, float& t) const
+    {
+        const glm::vec3 oc = o - centre;
+        const float a = glm::dot(d, d), b = glm::dot(oc, d), c = glm::dot(oc, oc) - radius * radius;
+        const float disc = b * b - a * c;
+        if (disc < 0.0f) return false;
+        t = (-b - std::sqrt(disc)) / a;
+        if (t <= 0.0f) t = (-b + std::sqrt(disc)) / a;
+        return t > 0.0f;
+    }
+    DepthSample operator()(const glm::vec3& P) const
+    {
+        const glm::vec3 d = glm::normalize(P);
+        float t;
+        if (!hit(glm::vec3(0.0f), d, t)) return { false, 0.0f };
+        return { true, (t * d).z };
+    }
+};
+
+// The mirror search's budget: each budget's answer lies within it (in texels of the pass, seen
+// from its camera) of the exact hit on a boulder, and a coarser budget stops sooner (depth reads
+// counted)
+TEST(Optics, TheMirrorSearchStopsWithinItsBudgetAndSoonerForACoarserOne)
+{
+    const Boulder boulder{ glm::vec3(0.0f, -6.0f, -30.0f), 8.0f };
+    const DepthLookup lookup = std::cref(boulder);
+    const glm::mat4 proj = glm::perspective(glm::radians(60.0f), 1.0f, 0.5f, 500.0f);
+    auto texel = [&](const glm::vec3& P) {
+        const glm::vec4 c = proj * glm::vec4(P, 1.0f);
+        return glm::vec2(c) / c.w * 0.5f * 512.0f;
+    };
+    std::vector<double> meanReads;
+    for (float budget : { 1.0f / 16.0f, 0.25f, 1.0f, 4.0f }) {
+        int reads = 0, rays = 0;
+        double worst = 0.0;
+        for (float ux = -1.0f; ux <= 1.01f; ux += 0.25f)
+            for (float ay = -0.04f; ay <= 0.041f; ay += 0.01f) {
+                const glm::vec3 U(ux, -2.0f, -8.0f), R = glm::normalize(glm::vec3(0.1f * ux, 0.15f + ay, -1.0f));
+                float t;
+                if (!boulder.hit(U, R, t)) continue;
+                int n = 0;
+                const BottomHit h = mirrorSearch(U, R, 8, lookup, SearchTolerance::ofTexels(proj, 512, budget),
+                                                 glm::vec4(0, 0, 0, 1), INFINITY, &n);
+                ASSERT_TRUE(h.valid);
+                worst = std::max(worst, double(glm::length(texel(h.W) - texel(U + t * R))));
+                reads += n;
+                ++rays;
+            }
+        ASSERT_GT(rays, 30);
+        EXPECT_LT(worst, budget) << "texels, budget " << budget;
+        meanReads.push_back(double(reads) / rays);
+    }
+    for (size_t i = 1; i < meanReads.size(); ++i) EXPECT_LT(meanReads[i], meanReads[i - 1]) << i;
+    std::printf("mirror search, mean depth reads a ray at budgets 1/16, 1/4, 1, 4 texels: %.2f %.2f %.2f %.2f\n",
+                meanReads[0], meanReads[1], meanReads[2], meanReads[3]);
 }
 
 // Thesis §7.5: the two models of the surface seen from below (eye in water).

@@ -158,6 +158,7 @@ namespace {
 struct MirrorLookupErrors {
     std::vector<double> texels;
     int notPoints = 0; //!< pixels whose ray meets the wall but whose lookup is not a point
+    double meanReads = 0.0; //!< the reflection search's depth reads a pixel, over the same pixels
 };
 
 // Where the wall stands and the eye looks from: the sum's waves seen across 12 m from 2 m up; the
@@ -165,8 +166,10 @@ struct MirrorLookupErrors {
 // eye's foot, where a pixel spans less than the finest texel and the GPU's normal is the CPU's
 // (level 0, bilinear)
 struct WallView {
-    bool wind = false;
+    bool wind = false, flat = false; //!< flat: no waves at all
     double eyeHeight = 2.0, wallY = 12.0, reach = 1e9;
+    float budget = 0.25f; //!< the settings' ErrorBudget, texels
+    int steps = 3;
     double top = 4.7; //!< the highest wall point checked (the reflection pass sees the wall up to it)
     int width = 240, height = 180;
 };
@@ -179,7 +182,9 @@ MirrorLookupErrors mirrorLookupOnAWall(WaterSettings::ReflectionLookup lookup, b
     osg::ref_ptr<WaterNode> water = new WaterNode;
     WaterSurface* surface = water->getSurface();
     surface->setSize(60.0f);
-    if (view.wind) {
+    if (view.flat) {
+        surface->setWaves({});
+    } else if (view.wind) {
         raiseWind(*surface, 5.0f, 140.0f, osg::Vec2(0.3f, 1.0f)); // a breeze over the lake's 140 m
     } else {
         surface->setResolution(385); // 0.16 m between vertices: the grid within 0.5 mm of the waves
@@ -187,6 +192,8 @@ MirrorLookupErrors mirrorLookupOnAWall(WaterSettings::ReflectionLookup lookup, b
     }
     water->getSettings()->setReflectionLookup(lookup);
     water->getSettings()->setFovExtension(1.5f, 1.5f, 10.0f);
+    water->getSettings()->setErrorBudget(view.budget);
+    water->getSettings()->setSearchSteps(view.steps);
     water->setDebugOutput(DEBUG_REFLECTION_LOOKUP);
     // the wall: y = 12, x in [-8, 8], from 0.3 m to 5 m on the eye's side of the water
     const double s = eyeBelow ? -1.0 : 1.0, y0 = view.wallY, x0 = 8.0, z0 = 0.3 * s, z1 = 5.0 * s;
@@ -206,6 +213,10 @@ MirrorLookupErrors mirrorLookupOnAWall(WaterSettings::ReflectionLookup lookup, b
         return osg::Vec2d((c.x() / c.w() * 0.5 + 0.5) * size, (c.y() / c.w() * 0.5 + 0.5) * size);
     };
     osg::ref_ptr<osg::Image> img = h.readColor();
+    water->setDebugOutput(DEBUG_WORK);
+    h.frame(t);
+    osg::ref_ptr<osg::Image> work = h.readColor();
+    double reads = 0.0;
     const osg::Matrixd inv = osg::Matrixd::inverse(h.camera()->getViewMatrix() * h.camera()->getProjectionMatrix());
     for (int y = 0; y < h.height(); y += 2)
         for (int x = 0; x < h.width(); x += 2) {
@@ -225,7 +236,9 @@ MirrorLookupErrors mirrorLookupOnAWall(WaterSettings::ReflectionLookup lookup, b
             const float* c = pixel(img.get(), x, y);
             if (!(std::fabs(c[3] - 2.0f) < 1e-3f)) { ++out.notPoints; continue; }
             out.texels.push_back((texel(osg::Vec3d(c[0], c[1], c[2])) - texel(X)).length());
+            reads += pixel(work.get(), x, y)[1];
         }
+    out.meanReads = out.texels.empty() ? 0.0 : reads / double(out.texels.size());
     std::sort(out.texels.begin(), out.texels.end());
     return out;
 }
@@ -289,6 +302,41 @@ TEST(RenderReflection, SearchFindsTheMirrorImageOfAWallOverTheWindsWaves)
     EXPECT_LE(search.notPoints, int(search.texels.size() / 500)) << "of " << search.texels.size();
     EXPECT_LT(median, 0.1) << "texels";
     EXPECT_LT(p99, 0.5) << "texels";
+}
+
+// The search's error budget: over flat water and over the sum's waves, each budget's lookups lie
+// within it of the exact hit on the wall at 99% of the pixels, and at every pixel within it plus
+// the half texel a nearest-filtered depth map can add (the tolerance the search has always been
+// held to). Over flat water the first guess is the hit: two depth reads (U's line of sight, the
+// guess) at every budget; over waves a coarser budget reads fewer (counted by the work debug
+// output, not timed). Eight steps, so the budget stops the search.
+TEST(RenderReflection, TheSearchStopsWithinItsErrorBudgetAndSoonerForACoarserOne)
+{
+    Harness probe(8, 8);
+    REQUIRE_GL(probe);
+    for (bool flat : { true, false }) {
+        std::vector<double> reads;
+        for (float budget : { 1.0f / 16.0f, 0.25f, 1.0f, 4.0f }) {
+            WallView view;
+            view.flat = flat;
+            view.budget = budget;
+            view.steps = 8;
+            const MirrorLookupErrors search = mirrorLookupOnAWall(WaterSettings::REFLECTION_SEARCH, false, view);
+            ASSERT_GT(search.texels.size(), 1000u);
+            const double p99 = search.texels[size_t(0.99 * double(search.texels.size()))];
+            const char* water = flat ? "flat" : "waves";
+            EXPECT_LT(p99, budget) << "texels, budget " << budget << ", " << water;
+            EXPECT_LT(search.texels.back(), budget + 0.5) << "texels, budget " << budget << ", " << water;
+            reads.push_back(search.meanReads);
+            std::printf("%s, budget %.4f texels: p99 %.3f texels, worst %.3f, %.2f depth reads a pixel\n", water, budget,
+                        p99, search.texels.back(), search.meanReads);
+        }
+        if (flat) {
+            for (double r : reads) EXPECT_LT(r, 2.05) << "depth reads a pixel over flat water";
+        } else {
+            for (size_t i = 1; i < reads.size(); ++i) EXPECT_LT(reads[i], reads[i - 1]) << i;
+        }
+    }
 }
 
 namespace {

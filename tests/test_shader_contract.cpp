@@ -86,6 +86,7 @@ TEST(ShaderContract, EveryNamedValueIsItsEnumsValue)
         { "OSGWATER_DEBUG_SURFACE", DEBUG_SURFACE },
         { "OSGWATER_DEBUG_DRAWN_SURFACE", DEBUG_DRAWN_SURFACE },
         { "OSGWATER_DEBUG_SLOPES", DEBUG_SLOPES },
+        { "OSGWATER_DEBUG_WORK", DEBUG_WORK },
     };
     EXPECT_EQ(contractDefines(), expected);
     // and the table the text is made from says the same

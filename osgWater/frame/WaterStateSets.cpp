@@ -70,7 +70,7 @@ WaterStateSets::WaterStateSets() : _programs(new ProgramLibrary)
     _water->addUniform(waves.get());
     _water->addUniform(phases.get());
     const char* floats[] = { "osgWater_Level", "osgWater_PhotonExtinction", "osgWater_FresnelQ", "osgWater_ReflectionScale",
-                             "osgWater_UnderwaterScale", "osgWater_SearchTolerance", "osgWater_WaveBound", "osgWater_GridCell" };
+                             "osgWater_UnderwaterScale", "osgWater_ErrorBudget", "osgWater_WaveBound", "osgWater_GridCell" };
     for (const char* f : floats) _water->addUniform(new osg::Uniform(f, 0.0f));
     _water->addUniform(new osg::Uniform("osgWater_WaveCount", 0));
     _water->addUniform(new osg::Uniform("osgWater_SearchSteps", 3));
@@ -129,7 +129,7 @@ void WaterStateSets::applySettings(const WaterSettings& s, const WaterSurface& s
     w->getUniform("osgWater_UnderwaterScale")->set(s.getUnderwaterLookupScale());
     w->getUniform("osgWater_SearchSteps")->set(s.getSearchSteps());
     w->setDefine("OSGWATER_SEARCH_STEPS", std::to_string(s.getSearchSteps()));
-    w->getUniform("osgWater_SearchTolerance")->set(s.getSearchTolerance());
+    w->getUniform("osgWater_ErrorBudget")->set(s.getErrorBudget());
     w->getUniform("osgWater_OneStep")->set(osg::Vec2f(s.getOneStepScale(), s.getOneStepMaxDepth()));
     w->getUniform("osgWater_Level")->set(float(surface.getLevel()));
     w->getUniform("osgWater_WaveBound")->set(surface.usesGrid() ? surface.getMaxAmplitude() : 0.0f);

@@ -231,8 +231,25 @@ BottomHit oneStepSearch(const glm::vec3& U, const glm::vec3& R, float scale, flo
     return r;
 }
 
-BottomHit iterativeSearch(const glm::vec3& U, const glm::vec3& R, int steps, const DepthLookup& lookup, float tolerance)
+SearchTolerance SearchTolerance::ofTexels(const glm::mat4& proj, int texelsHigh, float texels)
 {
+    // a texel's height at eye-space z is 2 w / (proj[1][1] texelsHigh), w = proj[2][3] z + proj[3][3]
+    const float k = 2.0f * texels / (proj[1][1] * float(std::max(texelsHigh, 1)));
+    return SearchTolerance(k * proj[3][3], k * -proj[2][3]);
+}
+
+// A lookup that counts its calls into `reads`, when there is a counter
+static DepthLookup counted(const DepthLookup& lookup, int* reads)
+{
+    if (!reads) return lookup;
+    *reads = 0;
+    return [&lookup, reads](const glm::vec3& P) { ++*reads; return lookup(P); };
+}
+
+BottomHit iterativeSearch(const glm::vec3& U, const glm::vec3& R, int steps, const DepthLookup& uncounted,
+                          const SearchTolerance& tolerance, int* reads)
+{
+    const DepthLookup lookup = counted(uncounted, reads);
     BottomHit best;
     steps = std::min(std::max(steps, 1), 8);
     glm::vec3 Aprev;
@@ -247,7 +264,7 @@ BottomHit iterativeSearch(const glm::vec3& U, const glm::vec3& R, int steps, con
         if (!bottomAlongRay(W, lookup, A)) { W = 0.5f * (U + W); continue; } // sky: back towards U
         const float e = glm::length(A - W);
         if (e < best.error) { best.W = W; best.A = A; best.error = e; }
-        if (i == steps || e < tolerance) break; // converged: further lookups cannot do better by much
+        if (i == steps || e < tolerance.at(A)) break; // converged: further lookups cannot do better by much
         // W_{i+1}: where p crosses the segment A_i A_{i+1} (eq. 3) ...
         glm::vec3 Wn;
         const glm::vec3 Q = A - Aprev;
@@ -278,9 +295,10 @@ float frustumExit(const glm::mat4& proj, const glm::vec3& P, const glm::vec3& R)
     return t;
 }
 
-BottomHit mirrorSearch(const glm::vec3& U, const glm::vec3& R, int steps, const DepthLookup& lookup, float tolerance,
-                       const glm::vec4& floorPlane, float tExit)
+BottomHit mirrorSearch(const glm::vec3& U, const glm::vec3& R, int steps, const DepthLookup& uncounted,
+                       const SearchTolerance& tolerance, const glm::vec4& floorPlane, float tExit, int* reads)
 {
+    const DepthLookup lookup = counted(uncounted, reads);
     // a surface under the floor plane is seen as sky
     const DepthLookup aboveFloor = [&](const glm::vec3& P) {
         DepthSample s = lookup(P);
@@ -310,7 +328,7 @@ BottomHit mirrorSearch(const glm::vec3& U, const glm::vec3& R, int steps, const 
             f = W.z - A.z;
             const float e = glm::length(A - W);
             if (e < best.error) { best.W = W; best.A = A; best.error = e; }
-            if (e < tolerance) break;
+            if (e < tolerance.at(A)) break;
         }
         const float tPrev = tLo, fPrev = fLo;
         // Illinois: an end kept twice in a row has its value halved, so the other end moves too
@@ -323,7 +341,7 @@ BottomHit mirrorSearch(const glm::vec3& U, const glm::vec3& R, int steps, const 
         } else // bracketed: regula falsi (bisection next to the sky)
             t = fLo < 1.0e29f ? tLo + (tHi - tLo) * fLo / (fLo - fHi) : 0.5f * (tLo + tHi);
     }
-    if (best.error <= tolerance + 0.01f * glm::length(best.W - U)) return best;
+    if (best.error <= tolerance.at(best.A) + 0.01f * glm::length(best.W - U)) return best;
     if (tHi < 0.0f) return BottomHit(); // every candidate in front: the ray went on past everything
     best.W = best.A = U + t * R; // the root's best estimate in its bracket
     best.error = 0.0f;

@@ -98,6 +98,19 @@ OSGWATER_EXPORT bool lineIntersection(const glm::vec3& U, const glm::vec3& R,
 struct DepthSample { bool hit; float z; };
 using DepthLookup = std::function<DepthSample(const glm::vec3& P)>;
 
+//! When a search's candidate is close enough to the surface point A it sees: within `metres` plus
+//! `perMetre` times A's distance in front of the pass's camera. A budget of texels (the settings'
+//! ErrorBudget) is a length across the line of sight that the pass's camera sees as that many
+//! texels: growing with the distance for a perspective camera, fixed for an orthographic one.
+//! Mirrored in optics.glsl (owTexelTolerance).
+struct SearchTolerance {
+    float metres = 0.0f, perMetre = 0.0f;
+    SearchTolerance(float m = 0.0f, float perMetreOfDepth = 0.0f) : metres(m), perMetre(perMetreOfDepth) {}
+    //! `texels` of a pass whose projection is `proj` and whose target is `texelsHigh` texels high
+    OSGWATER_EXPORT static SearchTolerance ofTexels(const glm::mat4& proj, int texelsHigh, float texels);
+    float at(const glm::vec3& A) const { return metres + perMetre * -A.z; }
+};
+
 //! Result of a bottom search, in the refraction camera's eye space (camera at origin, -Z forward).
 struct BottomHit {
     bool valid = false;   //!< false: every lookup saw sky; no bottom along R
@@ -117,9 +130,10 @@ OSGWATER_EXPORT BottomHit oneStepSearch(const glm::vec3& U, const glm::vec3& R, 
 //! (under a clipped shore, off the texture) is replaced by the point half way back to U; with no
 //! candidate on a bottom the answer is A_1, the bottom straight behind U. Invalid only when
 //! U itself sees sky. The search stops early once a candidate is within `tolerance` of its
-//! bottom point (0: always all steps).
+//! bottom point (0: always all steps). `reads`, when given: how many depth lookups it made.
 OSGWATER_EXPORT BottomHit iterativeSearch(const glm::vec3& U, const glm::vec3& R, int steps,
-                                          const DepthLookup& lookup, float tolerance = 0.0f);
+                                          const DepthLookup& lookup, const SearchTolerance& tolerance = {},
+                                          int* reads = nullptr);
 
 //! The reflected ray U + t R (t > 0) in the reflection pass's eye space (the mirrored scene): its
 //! hit, or invalid when it meets nothing (look it up by its direction). f(t), how far U + t R lies
@@ -134,8 +148,8 @@ OSGWATER_EXPORT BottomHit iterativeSearch(const glm::vec3& U, const glm::vec3& R
 //! candidates go no further than `tExit`, where the ray leaves the texture (frustumExit): one
 //! beyond it sees sky, and the search would step on past a hit it had not bracketed yet.
 OSGWATER_EXPORT BottomHit mirrorSearch(const glm::vec3& U, const glm::vec3& R, int steps, const DepthLookup& lookup,
-                                       float tolerance = 0.0f, const glm::vec4& floorPlane = glm::vec4(0, 0, 0, 1),
-                                       float tExit = INFINITY);
+                                       const SearchTolerance& tolerance = {}, const glm::vec4& floorPlane = glm::vec4(0, 0, 0, 1),
+                                       float tExit = INFINITY, int* reads = nullptr);
 
 //! How far the ray P + t R (eye space of a pass with projection `proj`) stays on the pass's
 //! texture: the largest t whose point lies inside the frustum's four sides and in front of the

@@ -12,7 +12,7 @@ namespace detail {
 //! The binary layout of every osgWater wrapper together: raised whenever a wrapper's binary fields
 //! change (Serialization.TheBinarySeedsReadAsTheirTextTwins fails until it is, and the seeds are
 //! written again).
-constexpr int kBinaryLayout = 3; // 2: the wind's choppiness; 3: the tone curve
+constexpr int kBinaryLayout = 4; // 2: the wind's choppiness; 3: the tone curve; 4: the error budget
 
 class LayoutVersionSerializer : public osgDB::BaseSerializer
 {

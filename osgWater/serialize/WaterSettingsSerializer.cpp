@@ -83,7 +83,7 @@ REGISTER_OBJECT_WRAPPER(osgWater_WaterSettings, new osgWater::WaterSettings, osg
     END_ENUM_FIELD();
     ADD_FLOAT_FIELD(RefractionPlaneDepth, 0.0f);
     ADD_INT_FIELD(SearchSteps, 3);
-    ADD_FLOAT_FIELD(SearchTolerance, 0.01f);
+    ADD_FLOAT_FIELD(ErrorBudget, 0.25f);
     ADD_FLOAT_FIELD(OneStepScale, 1.0f);
     ADD_FLOAT_FIELD(OneStepMaxDepth, 20.0f);
     ADD_FLOAT_FIELD(UnderwaterLookupScale, 1.5f);

@@ -44,7 +44,7 @@ WaterSettings::WaterSettings()
       _fresnelModel(FRESNEL_SCHLICK), _fresnelExponent(5.0f), _fresnelReciprocalPower(6.62f),
       _reflectionScale(1.0f),
       _refractionLookup(ITERATIVE), _reflectionLookup(REFLECTION_SEARCH), _reflectionPlaneHeight(0.0f),
-      _refractionPlaneDepth(0.0f), _searchSteps(3), _searchTolerance(0.01f),
+      _refractionPlaneDepth(0.0f), _searchSteps(3), _errorBudget(0.25f),
       _oneStepScale(1.0f), _oneStepMaxDepth(20.0f), _underwaterLookupScale(1.5f),
       _fovExtNear(1.5f), _fovExtFar(1.2f), _fovExtFalloff(10.0f),
       _clipOffset(0.05f),
@@ -80,7 +80,7 @@ WaterSettings::WaterSettings(const WaterSettings& o, const osg::CopyOp& copyop)
       _fresnelModel(o._fresnelModel), _fresnelExponent(o._fresnelExponent),
       _fresnelReciprocalPower(o._fresnelReciprocalPower), _reflectionScale(o._reflectionScale),
       _refractionLookup(o._refractionLookup), _reflectionLookup(o._reflectionLookup),
-      _reflectionPlaneHeight(o._reflectionPlaneHeight), _refractionPlaneDepth(o._refractionPlaneDepth), _searchSteps(o._searchSteps), _searchTolerance(o._searchTolerance),
+      _reflectionPlaneHeight(o._reflectionPlaneHeight), _refractionPlaneDepth(o._refractionPlaneDepth), _searchSteps(o._searchSteps), _errorBudget(o._errorBudget),
       _oneStepScale(o._oneStepScale), _oneStepMaxDepth(o._oneStepMaxDepth),
       _underwaterLookupScale(o._underwaterLookupScale),
       _fovExtNear(o._fovExtNear), _fovExtFar(o._fovExtFar), _fovExtFalloff(o._fovExtFalloff),
@@ -190,7 +190,7 @@ std::string WaterSettings::toneCurveNames() { return detail::joinedNames(kToneCu
 std::string WaterSettings::causticsMethodNames() { return detail::joinedNames(kCausticsMethodNames); }
 void WaterSettings::setReflectionScale(float c) { _reflectionScale = clampOr("reflectionScale", c, 0.0f, 1000.0f, 1.0f); touch(); }
 void WaterSettings::setSearchSteps(int n) { _searchSteps = clampInt("searchSteps", n, 1, 8); touch(); }
-void WaterSettings::setSearchTolerance(float m) { _searchTolerance = clampOr("searchTolerance", m, 0.0f, 10.0f, 0.01f); touch(); }
+void WaterSettings::setErrorBudget(float texels) { _errorBudget = clampOr("errorBudget", texels, 1.0f / 64.0f, 16.0f, 0.25f); touch(); }
 void WaterSettings::setOneStepScale(float s) { _oneStepScale = clampOr("oneStepScale", s, 0.0f, 100.0f, 1.0f); touch(); }
 void WaterSettings::setOneStepMaxDepth(float d) { _oneStepMaxDepth = clampOr("oneStepMaxDepth", d, 0.0f, 1.0e4f, 20.0f); touch(); }
 void WaterSettings::setUnderwaterLookupScale(float m) { _underwaterLookupScale = clampOr("underwaterLookupScale", m, 0.0f, 1000.0f, 1.5f); touch(); }

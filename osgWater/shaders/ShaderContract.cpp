@@ -49,7 +49,7 @@ const std::vector<ShaderConstant>& osgWater::shaderConstants()
         const struct { const char* name; DebugOutput value; } debug[] = {
             { "NONE", DEBUG_NONE }, { "BOTTOM_HIT", DEBUG_BOTTOM_HIT }, { "REFLECTION_LOOKUP", DEBUG_REFLECTION_LOOKUP },
             { "FRESNEL", DEBUG_FRESNEL }, { "SURFACE", DEBUG_SURFACE }, { "DRAWN_SURFACE", DEBUG_DRAWN_SURFACE },
-            { "SLOPES", DEBUG_SLOPES }
+            { "SLOPES", DEBUG_SLOPES }, { "WORK", DEBUG_WORK }
         };
         for (const auto& d : debug) c.push_back({ std::string("OSGWATER_DEBUG_") + d.name, int(d.value) });
         return c;

@@ -35,7 +35,7 @@ void resetInfiniteBound(osg::Node& n)
 std::string checkSettings(const osgWater::WaterSettings& s)
 {
     const float values[] = { s.getAirIOR(), s.getWaterIOR(), s.getAttenuation(), s.getFresnelExponent(),
-                             s.getReflectionScale(), s.getSearchTolerance(), s.getOneStepScale(),
+                             s.getReflectionScale(), s.getErrorBudget(), s.getOneStepScale(),
                              s.getOneStepMaxDepth(), s.getUnderwaterLookupScale(), s.getGlowIntensity(),
                              s.getGlowRadius(), s.getGlowResolution(), s.getGlowExponent(),
                              s.getFovExtensionNear(), s.getFovExtensionFar(), s.getFovExtensionFalloff(),
