@@ -3,6 +3,7 @@
 // object it made.
 #include "node/WaterNodeImpl.h"
 #include "GLHarness.h"
+#include <osgWater/Sky>
 #include <osgWater/WaterNode>
 #include "frame/PassMath.h"
 #include "optics/Srgb.h"
@@ -303,6 +304,39 @@ TEST(RenderFrame, ThePassesCountTheFragmentsTheyShade)
     water->setPassTimingEnabled(false);
     h.frame(2.0);
     EXPECT_LT(water->getViewReport(h.camera()).fragments[PASS_REFRACTION], 0.0) << "off: nothing counted";
+}
+
+// The sky is drawn only where it can be seen: in the refraction pass from above, which keeps what
+// lies under the water, no ray meets it, and that pass counts the bed's fragments alone, as
+// without a sky (a sky drawn there shades the whole target again); the reflection from above and the
+// refraction from below see it, and shade at least the target's texels for it.
+TEST(RenderFrame, TheSkyIsDrawnOnlyInThePassesThatSeeIt)
+{
+    Harness h(96, 64);
+    REQUIRE_GL(h);
+    const int side = 256;
+    auto passFragments = [&](bool withSky, double eyeZ, PassId pass) {
+        osg::ref_ptr<WaterNode> water = flatWater();
+        water->getSettings()->setCausticsEnabled(false);
+        water->getSettings()->setRefractionTextureSize(side);
+        water->getSettings()->setReflectionTextureSize(side);
+        water->addChild(checkerPlane(-2.0f, 400.0f, 1.0f));
+        if (withSky) water->addChild(new Sky);
+        water->setPassTimingEnabled(true);
+        h.setScene(water.get());
+        h.lookAt(osg::Vec3d(0, 0, eyeZ), osg::Vec3d(0, 0.01, eyeZ > 0.0 ? -1.0 : 1.0));
+        for (int i = 0; i < 4; ++i) {
+            h.frame(1.0 + i / 60.0); // results are read a frame after they are made
+            h.readColor();
+        }
+        return water->getViewReport(h.camera()).fragments[pass];
+    };
+    const double bedAlone = passFragments(false, 3.0, PASS_REFRACTION);
+    const double withSky = passFragments(true, 3.0, PASS_REFRACTION);
+    ASSERT_GE(bedAlone, double(side * side)) << "the bed fills the refraction target";
+    EXPECT_EQ(withSky, bedAlone) << "the refraction from above shades no sky";
+    EXPECT_GE(passFragments(true, 3.0, PASS_REFLECTION), double(side * side)) << "the reflection from above shows the sky";
+    EXPECT_GE(passFragments(true, -1.0, PASS_REFRACTION), double(side * side)) << "Snell's window shows the sky";
 }
 
 // The surface pass's work per water pixel: the rings around the eye are never thinner than their

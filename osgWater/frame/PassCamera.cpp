@@ -107,6 +107,13 @@ bool osgWater::drawsSceneColours(const osg::Camera* camera)
     return pass == PASS_ENVIRONMENT || pass == PASS_REFLECTION || pass == PASS_REFRACTION;
 }
 
+bool osgWater::seesTheSky(const osg::Camera* camera)
+{
+    if (!drawsSceneColours(camera)) return false;
+    const PassCamera* pass = dynamic_cast<const PassCamera*>(camera);
+    return !pass || !(pass->getKeepPlane().getNormal().z() < 0.0);
+}
+
 void PassCamera::setKeepPlane(const osg::Plane& localPlane)
 {
     _keepPlane = localPlane;

@@ -34,6 +34,10 @@ OSGWATER_EXPORT bool isWaterPass(const osg::Camera* camera);
 //! Whether `camera` draws the scene's colours: a view (not a water pass), or the environment,
 //! reflection or refraction pass; not the sun's depth, the photons, nor the glow's occluders.
 OSGWATER_EXPORT bool drawsSceneColours(const osg::Camera* camera);
+//! Whether `camera` can see the sky: it draws the scene's colours, and if it is a PassCamera its
+//! keep plane keeps the zenith's side (a refraction pass from above keeps only what lies under the
+//! water, where no ray of it meets the sky).
+OSGWATER_EXPORT bool seesTheSky(const osg::Camera* camera);
 
 //! Releases a pass camera's GL objects on `state` (all contexts when null): its render stage (FBO,
 //! renderbuffers), its StateSet and the textures it renders into.

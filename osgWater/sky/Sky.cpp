@@ -18,14 +18,16 @@ const char* kWho = "osgWater::Sky";
 // the scene draws covers it
 const int kSkyBin = -10;
 
-// the sky only where the scene's colours are drawn: a pass that draws the scene for its depth (the
-// sun's depth map, the glow's occluders) or its photons must not take its colour
-struct OnlyWhereColoursAreDrawn : public osg::DrawableCullCallback
+// the sky only where it can be seen: a pass that draws the scene for its depth (the sun's depth
+// map, the glow's occluders) or its photons must not take its colour, and the refraction from above
+// sees only what lies under the water (a full target of sky there, which the scene then covered, was
+// a quarter of that pass's fragments on the lake)
+struct OnlyWhereTheSkyIsSeen : public osg::DrawableCullCallback
 {
     bool cull(osg::NodeVisitor* nv, osg::Drawable*, osg::RenderInfo*) const override
     {
         osgUtil::CullVisitor* cv = nv ? nv->asCullVisitor() : nullptr;
-        return cv && !drawsSceneColours(cv->getCurrentCamera());
+        return cv && !seesTheSky(cv->getCurrentCamera());
     }
 };
 }
@@ -51,7 +53,7 @@ void Sky::setUp()
     osg::Drawable* drawable = triangle->getDrawable(0);
     addDrawable(drawable);
     setCullingActive(false);
-    drawable->setCullCallback(new OnlyWhereColoursAreDrawn);
+    drawable->setCullCallback(new OnlyWhereTheSkyIsSeen);
     osg::StateSet* ss = drawable->getOrCreateStateSet();
     ss->setAttribute(createProgram("osgWater.sky", "screen.vert", "sky.frag"));
     ss->setAttributeAndModes(new osg::Depth(osg::Depth::LEQUAL, 0.0, 1.0, false));
