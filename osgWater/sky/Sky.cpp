@@ -14,9 +14,10 @@ using namespace osgWater;
 
 namespace {
 const char* kWho = "osgWater::Sky";
-// drawn before the scene's opaque bin, depth-tested at the far plane and never written: whatever
-// the scene draws covers it
-const int kSkyBin = -10;
+// drawn after the scene's opaque bins (and the water's underlay), before its transparent one (10),
+// depth-tested at the far plane and never written: only where nothing opaque was drawn, so the depth
+// test spares the sky's fragments behind the scene, and what blends over it comes after it
+const int kSkyBin = 9;
 
 // the sky only where it can be seen: a pass that draws the scene for its depth (the sun's depth
 // map, the glow's occluders) or its photons must not take its colour, and the refraction from above
