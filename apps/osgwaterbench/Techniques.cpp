@@ -16,6 +16,14 @@ std::vector<Technique> allTechniques()
                          s.setRefractionLookup(WaterSettings::ITERATIVE);
                          s.setSearchSteps(steps);
                      } });
+    // the error budget's frontier: each search stopped by the budget alone (eight steps at most);
+    // the default is a quarter texel, capped at three steps
+    const std::pair<const char*, float> budgets[] = { { "0.0625", 1.0f / 16.0f }, { "0.25", 0.25f }, { "1", 1.0f }, { "4", 4.0f } };
+    for (const auto& [name, texels] : budgets)
+        t.push_back({ std::string("budget-") + name, [texels = texels](WaterSettings& s) {
+                         s.setSearchSteps(8);
+                         s.setErrorBudget(texels);
+                     } });
     t.push_back({ "refraction-bracketed", [](WaterSettings& s) { s.setRefractionLookup(WaterSettings::BRACKETED); } });
     t.push_back({ "refraction-virtual-vertices", [](WaterSettings& s) { s.setRefractionLookup(WaterSettings::VIRTUAL_VERTICES); } });
     t.push_back({ "refraction-plane", [](WaterSettings& s) { s.setRefractionLookup(WaterSettings::PLANE_OFFSET); } });

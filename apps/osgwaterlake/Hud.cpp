@@ -16,6 +16,7 @@ std::string describeSettings(const WaterSettings& s)
                                                                        std::to_string(s.getSearchSteps())
                                                                  : std::string(WaterSettings::refractionLookupName(s.getRefractionLookup())))
       << (s.getRefractionCameraRotation() ? (s.getRefractionCameraApparentEye() ? " apparent eye" : " rotated") : "") << ", reflection " << (s.getReflectionEnabled() ? WaterSettings::reflectionLookupName(s.getReflectionLookup()) : "off")
+      << ", budget " << s.getErrorBudget() << " texels"
       << ", fresnel " << WaterSettings::fresnelModelName(s.getFresnelModel())
       << ", water ";
     if (s.getWaterModel() == WaterSettings::WATER_PER_CHANNEL) o << "per-channel";

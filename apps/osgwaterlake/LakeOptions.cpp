@@ -111,6 +111,7 @@ void LakeOptions::describe(osg::ApplicationUsage& u)
     u.addCommandLineOption("--wind <m/s>", "The wind's waves, raised by a wind of this speed (0-40) over the lake (its fetch the lake's size); default the scene's, a 5 m/s breeze (keys w, W)");
     u.addCommandLineOption("--planes <height> <depth>", "Plane-offset lookups' planes, metres from the level (0: from the scene)");
     u.addCommandLineOption("--steps <n>", "Candidates of the iterative search (1-8)");
+    u.addCommandLineOption("--budget <texels>", "The searches' error budget, texels of the texture each reads (1/64-16; 0.25)");
     u.addCommandLineOption("--reciprocal-power <p>", "Power of the reciprocal Fresnel model 1/(1+E.N)^p (default 6.62)");
     u.addCommandLineOption("--q <q>", "Fresnel exponent");
     u.addCommandLineOption("--water-type <name>", "The water: " + osgWater::waterTypeNames() + " (per-channel absorption and scattering; default clear-lake), or thesis (one k, one colour; the default with --k or --water-color)");
@@ -174,6 +175,7 @@ bool LakeOptions::read(osg::ArgumentParser& args)
             return false;
         }
     if (args.read("--steps", n)) _setters.push_back([n](WaterSettings& w) { w.setSearchSteps(n); });
+    if (args.read("--budget", f)) _setters.push_back([f](WaterSettings& w) { w.setErrorBudget(f); });
     if (args.read("--planes", f, g)) _setters.push_back([f, g](WaterSettings& w) {
         w.setReflectionPlaneHeight(f);
         w.setRefractionPlaneDepth(g);
