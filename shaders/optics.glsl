@@ -147,7 +147,7 @@ bool owLineIntersection(vec3 U, vec3 R, vec3 A1, vec3 Q, out vec3 W)
 // The searches take the pass as its depth texture and an owDepthPass: the refraction pass (the
 // bottom search), the reflection pass (the mirror search) and the sun's camera (photons).
 struct owDepthPass {
-    mat4 proj, invProj;
+    mat4 proj;
     vec4 floorPlane;     // eye space: a surface with dot(floorPlane, A) < 0 does not count (seen as sky)
     bool offTextureSky;  // a point off the texture sees sky (else the texture's edge answers for it)
 };
@@ -162,11 +162,14 @@ bool owPassTexCoord(mat4 proj, vec3 P, out vec2 tc)
     return true;
 }
 
-// The eye-space z of what a pass's depth target holds at texture coordinate tc (depth d)
-float owPassEyeZ(owDepthPass pass, vec2 tc, float d)
+// The eye-space z of what a pass's depth target holds at depth d: the projection's z and w rows do
+// not depend on x and y (perspective, frustum, ortho), so z_ndc = (P22 z + P32) / (P23 z + P33)
+// solved for z (a sixth of the inverse projection's product, on every depth read of a search)
+float owPassEyeZ(owDepthPass pass, float d)
 {
-    vec4 e = pass.invProj * vec4(vec3(tc, d) * 2.0 - 1.0, 1.0);
-    return e.z / e.w;
+    mat4 P = pass.proj;
+    float zn = 2.0 * d - 1.0;
+    return (P[3][2] - zn * P[3][3]) / (zn * P[2][3] - P[2][2]);
 }
 
 // How many depth reads the searches made on this fragment (the work debug output counts them)
@@ -197,7 +200,7 @@ bool owSurfaceAlongRay(sampler2D depthTex, owDepthPass pass, vec3 P, out vec3 A)
     ++owDepthReads;
     // only the cleared depth is sky: a sky dome drawn just inside the far plane is a surface
     if (d >= 1.0) return false;
-    float Z = owPassEyeZ(pass, tc, d);
+    float Z = owPassEyeZ(pass, d);
 #ifdef OSGWATER_ORTHO_DEPTH
     A = vec3(P.xy, Z);
 #else
@@ -293,7 +296,7 @@ uniform mat4 osgWater_RefractionInvProj;
 
 owDepthPass owRefractionPass()
 {
-    return owDepthPass(osgWater_RefractionProj, osgWater_RefractionInvProj, vec4(0.0, 0.0, 0.0, 1.0), false);
+    return owDepthPass(osgWater_RefractionProj, vec4(0.0, 0.0, 0.0, 1.0), false);
 }
 
 bool owRefractionTexCoord(vec3 P, out vec2 tc)

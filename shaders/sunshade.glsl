@@ -3,7 +3,6 @@
 const float kSunReachesTolerance = 0.005; // metres: well above the shade map's precision over its depth range
 uniform sampler2D osgWater_SunShade;   // the whole scene's depth seen from the sun (unclipped)
 uniform mat4 osgWater_SunShadeProj;
-uniform mat4 osgWater_SunShadeInvProj;
 
 // Whether the sun's ray reaches the water at P (sun eye space) before the scene: the shade map (the
 // whole scene, so the shore in front of the water and the pier above it alike) read between its
@@ -14,10 +13,10 @@ uniform mat4 osgWater_SunShadeInvProj;
 // texel answers.
 bool owSunReaches(vec3 P)
 {
-    owDepthPass shade = owDepthPass(osgWater_SunShadeProj, osgWater_SunShadeInvProj, vec4(0.0, 0.0, 0.0, 1.0), false);
+    owDepthPass shade = owDepthPass(osgWater_SunShadeProj, vec4(0.0, 0.0, 0.0, 1.0), false);
     vec2 tc;
     if (!owPassTexCoord(shade.proj, P, tc)) return true;
     float depth = owDepthBetweenTexels(osgWater_SunShade, tc);
     if (depth >= 1.0) return true; // nothing on this ray
-    return !(owPassEyeZ(shade, tc, depth) > P.z + kSunReachesTolerance);
+    return !(owPassEyeZ(shade, depth) > P.z + kSunReachesTolerance);
 }

@@ -21,7 +21,6 @@ uniform sampler2D osgWater_ReflectionDepth;
 uniform mat4 osgWater_ReflectionView;       // local -> reflection pass eye space (the mirror in it)
 uniform mat4 osgWater_ReflectionViewInverse;
 uniform mat4 osgWater_ReflectionProj;
-uniform mat4 osgWater_ReflectionInvProj;
 uniform mat4 osgWater_RefractionView;       // local -> refraction pass eye space
 uniform mat4 osgWater_RefractionViewInverse;
 
@@ -223,7 +222,7 @@ vec4 owReflectionLookupPoint(vec3 U, vec3 Rr, bool below)
     float side = Rr.z >= 0.0 ? 1.0 : -1.0;
     vec4 floorPlane = side * (vec4(toLocal[0].z, toLocal[1].z, toLocal[2].z, toLocal[3].z) - vec4(0.0, 0.0, 0.0, U.z))
                     + vec4(0.0, 0.0, 0.0, 1e-3);
-    owDepthPass pass = owDepthPass(osgWater_ReflectionProj, osgWater_ReflectionInvProj, floorPlane, true);
+    owDepthPass pass = owDepthPass(osgWater_ReflectionProj, floorPlane, true);
     owBottomHit hit = owMirrorSearch(osgWater_ReflectionDepth, pass, u1, R1, osgWater_SearchSteps,
                                      osgWater_ErrorBudget);
     return hit.valid ? vec4((osgWater_ReflectionViewInverse * vec4(hit.W, 1.0)).xyz, 1.0) : vec4(Rr, 0.0);

@@ -28,7 +28,6 @@ PhotonCamera::PhotonCamera(osg::StateSet* waterState, ProgramLibrary& programs, 
     // the search of optics.glsl reads "the refraction depth": here the sun's depth map
     _photonState->addUniform(new osg::Uniform("osgWater_RefractionDepth", int(UNIT_REFRACTION_DEPTH)));
     _photonState->addUniform(new osg::Uniform("osgWater_RefractionProj", osg::Matrixf()));
-    _photonState->addUniform(new osg::Uniform("osgWater_RefractionInvProj", osg::Matrixf()));
     _photonState->setMode(GL_BLEND, osg::StateAttribute::OFF | osg::StateAttribute::OVERRIDE);
 
     // the water's surface under the water and photon states (the surface is set by setSun())
@@ -52,7 +51,6 @@ void PhotonCamera::setSun(osg::Node* surface, const osg::Matrixd& view, const os
     setViewMatrix(view);
     setProjectionMatrix(projection);
     _photonState->getUniform("osgWater_RefractionProj")->set(osg::Matrixf(projection));
-    _photonState->getUniform("osgWater_RefractionInvProj")->set(osg::Matrixf(osg::Matrixd::inverse(projection)));
     _photonState->setTextureAttribute(UNIT_REFRACTION_DEPTH, sunDepth);
 }
 

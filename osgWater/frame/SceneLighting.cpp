@@ -84,7 +84,6 @@ void osgWater::applySunShade(osg::StateSet* ss, osg::Texture2D* shade, int unit,
     ss->setTextureAttribute(unit, shade);
     setOrAddUniform(ss, "osgWater_SunShade", unit);
     setOrAddUniform(ss, "osgWater_SunShadeProj", osg::Matrixf(projection));
-    setOrAddUniform(ss, "osgWater_SunShadeInvProj", osg::Matrixf(osg::Matrixd::inverse(projection)));
 }
 
 float osgWater::photonExtinction(const WaterSettings& s) { return s.getSunExtinction().y(); }

@@ -7,7 +7,8 @@ using namespace osgWater;
 
 namespace {
 
-// A depth search's inputs for one pass: prefix + View, ViewInverse, Proj, InvProj
+// A depth search's inputs for one pass: prefix + View, ViewInverse, Proj, and InvProj where the
+// water reads it (the refraction's virtual vertices: a drawn point's whole place from its depth)
 void setPassMatrices(osg::StateSet* ss, const std::string& prefix, const PassCamera& pass)
 {
     const osg::Matrixd& v = pass.getViewMatrix();
@@ -15,7 +16,7 @@ void setPassMatrices(osg::StateSet* ss, const std::string& prefix, const PassCam
     ss->getUniform(prefix + "View")->set(osg::Matrixf(v));
     ss->getUniform(prefix + "ViewInverse")->set(osg::Matrixf(osg::Matrixd::inverse(v)));
     ss->getUniform(prefix + "Proj")->set(osg::Matrixf(p));
-    ss->getUniform(prefix + "InvProj")->set(osg::Matrixf(osg::Matrixd::inverse(p)));
+    if (osg::Uniform* inverse = ss->getUniform(prefix + "InvProj")) inverse->set(osg::Matrixf(osg::Matrixd::inverse(p)));
 }
 
 }
@@ -43,7 +44,7 @@ ViewPasses::ViewPasses(osg::Group* scene, osg::StateSet* sceneState, osg::StateS
     _waterInputs->setTextureAttribute(UNIT_REFRACTION_DEPTH, _refraction->getDepthTexture());
     _waterInputs->setTextureAttribute(UNIT_REFLECTION_DEPTH, _reflection->getDepthTexture());
     const char* mats[] = { "osgWater_ReflectionMVP", "osgWater_ReflectionView", "osgWater_ReflectionViewInverse",
-                           "osgWater_ReflectionProj", "osgWater_ReflectionInvProj", "osgWater_RefractionView",
+                           "osgWater_ReflectionProj", "osgWater_RefractionView",
                            "osgWater_RefractionViewInverse", "osgWater_RefractionProj", "osgWater_RefractionInvProj" };
     for (const char* m : mats) _waterInputs->addUniform(new osg::Uniform(m, osg::Matrixf()));
     _waterInputs->addUniform(new osg::Uniform("osgWater_EyeLocal", osg::Vec3f()));
