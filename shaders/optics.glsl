@@ -178,11 +178,18 @@ int owDepthReads = 0;
 // How close a search's candidate must come to the surface point A it sees for the pass's camera to
 // see them at most `texels` apart (the settings' ErrorBudget): that many of the texels' heights at
 // A's depth, which grow with the distance for a perspective camera and not for an orthographic one.
+// Made once a search, as (metres, metres per metre of depth); owToleranceAt reads it at A.
 // Mirrored in osgWater::optics::SearchTolerance.
-float owTexelTolerance(mat4 proj, sampler2D depthTex, vec3 A, float texels)
+vec2 owTexelTolerance(mat4 proj, sampler2D depthTex, float texels)
 {
-    float w = proj[2][3] * A.z + proj[3][3];
-    return texels * 2.0 * w / (proj[1][1] * float(textureSize(depthTex, 0).y));
+    // a texel's height at eye-space z: 2 w / (P11 height), w = P23 z + P33
+    float k = texels * 2.0 / (proj[1][1] * float(textureSize(depthTex, 0).y));
+    return k * vec2(proj[3][3], -proj[2][3]);
+}
+
+float owToleranceAt(vec2 tolerance, vec3 A)
+{
+    return tolerance.x - tolerance.y * A.z;
 }
 
 // A: the first surface on the pass camera's ray through P; false for sky (the cleared depth), a
@@ -245,8 +252,8 @@ float owFrustumExit(mat4 proj, vec3 P, vec3 R)
 // line of sight sees no surface, t_1 comes from what the pass sees along R from its eye (the ray's
 // far end), and there is none when that sees none either. Where the pass's texture ends, so does
 // the search: the candidates go no further than where the ray leaves it. No candidate within
-// `budget` (texels, owTexelTolerance) + 1% of its distance: the root's estimate in its bracket when there is one, else the
-// ray went on past everything: none.
+// `budget` (texels, owTexelTolerance) + 1% of its distance: the root's estimate in its bracket when
+// there is one, else the ray went on past everything: none.
 owBottomHit owMirrorSearch(sampler2D depthTex, owDepthPass pass, vec3 U, vec3 R, int steps, float budget)
 {
     owBottomHit none = owBottomHit(false, U, U, 0.0);
@@ -255,6 +262,7 @@ owBottomHit owMirrorSearch(sampler2D depthTex, owDepthPass pass, vec3 U, vec3 R,
     if (owSurfaceAlongRay(depthTex, pass, U, A)) f0 = max(U.z - A.z, 0.0);
     else if (!owSurfaceAlongRay(depthTex, pass, R, A)) return none;
     owBottomHit best = owBottomHit(true, A, A, 1e30);
+    vec2 tolerance = owTexelTolerance(pass.proj, depthTex, budget);
     float tLo = 0.0, fLo = f0, tHi = -1.0, fHi = 0.0; // tHi < 0: no point behind a surface yet
     int side = 0; // the end the last candidate replaced: -1 the front one, 1 the back one
     // the candidates stay on the texture: one past its edge sees sky, and the search would step on
@@ -269,7 +277,7 @@ owBottomHit owMirrorSearch(sampler2D depthTex, owDepthPass pass, vec3 U, vec3 R,
             f = W.z - A.z;
             float e = length(A - W);
             if (e < best.error) { best.W = W; best.A = A; best.error = e; }
-            if (e < owTexelTolerance(pass.proj, depthTex, A, budget)) break;
+            if (e < owToleranceAt(tolerance, A)) break;
         }
         float tPrev = tLo, fPrev = fLo;
         // Illinois: an end kept twice in a row has its value halved, so the other end moves too
@@ -281,7 +289,7 @@ owBottomHit owMirrorSearch(sampler2D depthTex, owDepthPass pass, vec3 U, vec3 R,
         } else // bracketed: regula falsi (bisection next to the sky)
             t = fLo < 1e29 ? tLo + (tHi - tLo) * fLo / (fLo - fHi) : 0.5 * (tLo + tHi);
     }
-    if (best.error <= owTexelTolerance(pass.proj, depthTex, best.A, budget) + 0.01 * length(best.W - U)) return best;
+    if (best.error <= owToleranceAt(tolerance, best.A) + 0.01 * length(best.W - U)) return best;
     if (tHi < 0.0) return none;
     best.W = U + t * R; // the root's best estimate in its bracket
     best.A = best.W;
@@ -333,6 +341,7 @@ owBottomHit owIterativeSearch(vec3 U, vec3 R, int steps, float budget)
     vec3 Aprev;
     if (!owBottomAlongRay(U, Aprev)) return best;
     best = owBottomHit(true, Aprev, Aprev, 1e30);
+    vec2 tolerance = owTexelTolerance(osgWater_RefractionProj, osgWater_RefractionDepth, budget);
     vec3 W = U + length(Aprev - U) * R;
     for (int i = 1; i <= OSGWATER_SEARCH_STEPS; ++i) {
         if (i > steps) break;
@@ -340,7 +349,7 @@ owBottomHit owIterativeSearch(vec3 U, vec3 R, int steps, float budget)
         if (!owBottomAlongRay(W, A)) { W = 0.5 * (U + W); continue; }
         float e = length(A - W);
         if (e < best.error) { best.W = W; best.A = A; best.error = e; }
-        if (i == steps || e < owTexelTolerance(osgWater_RefractionProj, osgWater_RefractionDepth, A, budget)) break; // converged: saves the remaining lookups
+        if (i == steps || e < owToleranceAt(tolerance, A)) break; // converged: saves the remaining lookups
         vec3 Wn;
         vec3 Q = A - Aprev;
         bool ok = owLineIntersection(U, R, Aprev, Q, Wn)

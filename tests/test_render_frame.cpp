@@ -50,6 +50,18 @@ float maxDifference(const osg::Vec3& a, const osg::Vec3& b)
     return std::max({ std::fabs(a.x() - b.x()), std::fabs(a.y() - b.y()), std::fabs(a.z() - b.z()) });
 }
 
+// Four frames a second's sixtieth apart from t = 1, each read back: pass measures are read a frame
+// after they are made, and finished (as a swap finishes them). The last frame's image.
+osg::ref_ptr<osg::Image> measuredFrames(Harness& h)
+{
+    osg::ref_ptr<osg::Image> img;
+    for (int i = 0; i < 4; ++i) {
+        h.frame(1.0 + i / 60.0);
+        img = h.readColor();
+    }
+    return img;
+}
+
 osg::ref_ptr<WaterNode> flatWater()
 {
     osg::ref_ptr<WaterNode> water = new WaterNode;
@@ -239,10 +251,7 @@ TEST(RenderFrame, PassTimesAndWhetherEachPassRanGoIntoTheViewersStatistics)
     water->setPassTimingEnabled(true);
     h.setScene(water.get());
     h.lookAt(osg::Vec3d(0, 0, 3), osg::Vec3d(0, 10, -1));
-    for (int i = 0; i < 4; ++i) {
-        h.frame(1.0 + i / 60.0); // results are read a frame after they are made ...
-        h.readColor();           // ... and finished (as a swap finishes them)
-    }
+    measuredFrames(h);
     osg::Stats* stats = h.viewer()->getViewerStats();
     const unsigned int frame = h.viewer()->getFrameStamp()->getFrameNumber();
     double v = -1.0;
@@ -284,10 +293,7 @@ TEST(RenderFrame, ThePassesCountTheFragmentsTheyShade)
     h.lookAt(osg::Vec3d(0, 0, 3), osg::Vec3d(0, 0.01, -1));
     auto refractionFragments = [&](int side) {
         water->getSettings()->setRefractionTextureSize(side);
-        for (int i = 0; i < 4; ++i) {
-            h.frame(1.0 + i / 60.0); // results are read a frame after they are made
-            h.readColor();
-        }
+        measuredFrames(h);
         const ViewReport r = water->getViewReport(h.camera());
         EXPECT_EQ(r.refractionSize[0], side);
         EXPECT_EQ(r.refractionSize[1], side);
@@ -325,10 +331,7 @@ TEST(RenderFrame, TheSkyIsDrawnOnlyInThePassesThatSeeIt)
         water->setPassTimingEnabled(true);
         h.setScene(water.get());
         h.lookAt(osg::Vec3d(0, 0, eyeZ), osg::Vec3d(0, 0.01, eyeZ > 0.0 ? -1.0 : 1.0));
-        for (int i = 0; i < 4; ++i) {
-            h.frame(1.0 + i / 60.0); // results are read a frame after they are made
-            h.readColor();
-        }
+        measuredFrames(h);
         return water->getViewReport(h.camera()).fragments[pass];
     };
     const double bedAlone = passFragments(false, 3.0, PASS_REFRACTION);
@@ -357,11 +360,7 @@ TEST(RenderFrame, TheSurfaceShadesFewBlocksPerWaterPixel)
     water->setDebugOutput(DEBUG_SURFACE); // alpha 2 where the surface was shaded
     h.setScene(water.get());
     h.lookAt(osg::Vec3d(0, -42, 4.5), osg::Vec3d(0, 10, -1)); // the demo's view
-    osg::ref_ptr<osg::Image> img;
-    for (int i = 0; i < 4; ++i) {
-        h.frame(1.0 + i / 60.0);
-        img = h.readColor();
-    }
+    osg::ref_ptr<osg::Image> img = measuredFrames(h);
     int waterPixels = 0;
     for (int y = 0; y < h.height(); ++y)
         for (int x = 0; x < h.width(); ++x) waterPixels += pixel(img.get(), x, y)[3] == 2.0f;
