@@ -32,7 +32,7 @@ std::set<PassId> runs(const FrameFacts& f)
 
 TEST(PassTable, RowsAreInDrawingOrderAndEveryReadIsWrittenByAnEarlierRow)
 {
-    unsigned written = 0;
+    unsigned written = RES_WAVES; // the one input from outside the frame's rows
     for (int i = 0; i < PASS_COUNT; ++i) {
         const PassRow& row = passTable()[i];
         EXPECT_EQ(row.id, PassId(i)) << row.name;
@@ -140,6 +140,30 @@ TEST(PassTable, TheEnvironmentMapIsDrawnOnlyWhenStaleAndTheWaterIsSeen)
     f = inView();
     f.environment = false; // a map of the user's, or none
     EXPECT_FALSE(planPasses(f).runs(PASS_ENVIRONMENT));
+}
+
+TEST(PassTable, TheWavesAreReadOnlyWhereARunningPassDrawsOrReadsTheSurface)
+{
+    FrameFacts f = inView();
+    EXPECT_TRUE(planPasses(f).reads(RES_WAVES));
+    f.caustics = f.glowInView = false;
+    f.reflectionEnabled = f.refractionEnabled = false;
+    EXPECT_TRUE(planPasses(f).reads(RES_WAVES)) << "the surface itself";
+    f = inView();
+    f.waterInView = false; // the scene alone
+    EXPECT_FALSE(planPasses(f).reads(RES_WAVES));
+    f.reflectedCaustics = true; // the photons' grid is the surface seen from the sun
+    EXPECT_TRUE(planPasses(f).reads(RES_WAVES));
+    f.causticsDone = true;      // ... unless the caustics of an earlier frame still hold
+    EXPECT_FALSE(planPasses(f).reads(RES_WAVES));
+    f = inView();
+    f.waterInView = false;
+    f.eyeBelow = true;
+    f.causticsInScene = true;   // the scene program makes the caustics from the waves
+    EXPECT_EQ(planPasses(f).describe(), "sun depth, scene, backdrop");
+    EXPECT_TRUE(planPasses(f).reads(RES_WAVES));
+    f.caustics = false;
+    EXPECT_FALSE(planPasses(f).reads(RES_WAVES));
 }
 
 TEST(PassTable, ReflectiveCausticsAreRenderedForAViewThatSeesOnlyTheSceneAboveTheWater)

@@ -3,6 +3,7 @@
 // every planned pass runs in full.
 #include "node/WaterNodeImpl.h"
 #include "GLHarness.h"
+#include "surface/SpectralWaves.h"
 #include <osgWater/WaterNode>
 #include <algorithm>
 #include <cmath>
@@ -154,6 +155,56 @@ TEST(Skips, CausticsAreReusedUntilTheWavesCanHaveMovedThem)
     EXPECT_TRUE(std::isinf(water->getCausticsHoldTime()));
     h.frame(50.0);
     EXPECT_FALSE(rendered());
+}
+
+// The wind's cascades cost a few milliseconds of FFTs and a texture upload a frame: a frame that
+// neither draws nor reads the waves (the water out of view, the eye well above them) does neither,
+// and the first frame that sees them again draws them as of its own time.
+TEST(Skips, TheWindsWavesAreEvaluatedOnlyForAFrameThatDrawsOrReadsThem)
+{
+    auto windLake = [] {
+        osg::ref_ptr<WaterNode> water = wavyLake();
+        water->getSurface()->setSize(140.0f);
+        water->getSurface()->setWaveModel(WaterSurface::WAVES_WIND);
+        return water;
+    };
+    const osg::Vec3d eye(0, -30, 4);
+    const osg::Vec3d atWater(0, 0, -1), atSky(0, -60, 30);
+    Harness h(160, 120);
+    REQUIRE_GL(h);
+    osg::ref_ptr<WaterNode> water = windLake();
+    h.setScene(water.get());
+    h.lookAt(eye, atWater);
+    h.frame(1.0);
+    const detail::SpectralWaves* wind = water->getSurface()->getSpectralWaves();
+    ASSERT_NE(wind, nullptr);
+    EXPECT_EQ(wind->textureTime(), 1.0);
+    const unsigned int uploads = wind->heightTexture()->getImage(0)->getModifiedCount();
+
+    h.lookAt(eye, atSky); // the water out of view, the eye 4 m over waves of centimetres
+    h.frame(2.0);
+    h.frame(3.0);
+    EXPECT_EQ(osgWater::internals(*water).getPassPlan(h.camera()).describe(), "scene");
+    EXPECT_EQ(wind->evaluatedTime(), 1.0) << "the cascades were evaluated for a frame that shows no waves";
+    EXPECT_EQ(wind->heightTexture()->getImage(0)->getModifiedCount(), uploads) << "the texture was filled for nothing";
+    // a query still answers for the time it asks
+    const double z = water->getSurfaceHeightAt(3.0, 4.0, 3.0);
+    EXPECT_EQ(wind->evaluatedTime(), 3.0);
+
+    h.lookAt(eye, atWater); // the waves of this frame, though a query brought the cascades here first
+    h.frame(3.0);
+    EXPECT_EQ(wind->textureTime(), 3.0);
+    EXPECT_GT(wind->heightTexture()->getImage(0)->getModifiedCount(), uploads);
+    osg::ref_ptr<osg::Image> resumed = h.readColor();
+
+    // the same frame from a lake whose waves were drawn on every frame
+    Harness h2(160, 120);
+    osg::ref_ptr<WaterNode> always = windLake();
+    h2.setScene(always.get());
+    h2.lookAt(eye, atWater);
+    for (double t : { 1.0, 2.0, 3.0 }) h2.frame(t);
+    EXPECT_EQ(always->getSurfaceHeightAt(3.0, 4.0, 3.0), z);
+    EXPECT_LE(largestDifference(resumed.get(), h2.readColor().get()), 1.0f / 255.0f);
 }
 
 TEST(Skips, TheGlowIsDrawnOnlyWhereTheHighlightCanReach)

@@ -16,19 +16,20 @@ bool glowWanted(const FrameFacts& f) { return f.waterInView && f.glowInView; }
 bool environmentToRender(const FrameFacts& f) { return f.environment && f.environmentStale; }
 
 // what the water program reads
-const unsigned kWaterInputs = RES_REFLECTION | RES_REFRACTION | RES_ENVIRONMENT;
+const unsigned kWaterInputs = RES_REFLECTION | RES_REFRACTION | RES_ENVIRONMENT | RES_WAVES;
 
-// The frame, top to bottom. Pre-render rows draw in this order (renderOrder), overlay rows after
+// The frame, top to bottom. RES_WAVES: the programs that draw the surface or read it (the photons'
+// grid, the screen's procedural caustics, the virtual vertices, the highlight, the water program). Pre-render rows draw in this order (renderOrder), overlay rows after
 // the scene's bins in this order (renderBin).
 const PassRow kTable[PASS_COUNT] = {
     // id                   name               stage               reads                        writes                 litScene perView wanted
     { PASS_ENVIRONMENT,    "environment",     STAGE_PRE_RENDER, 0,                            RES_ENVIRONMENT,       false, false, environmentToRender },
     { PASS_SUN_DEPTH,      "sun depth",       STAGE_PRE_RENDER, 0,                            RES_SUN_DEPTH,         false, false, sunDepthToRender },
-    { PASS_PHOTONS,        "photons",         STAGE_PRE_RENDER, RES_SUN_DEPTH,                RES_PHOTONS,           false, false, photonsToRender },
-    { PASS_GATHER,         "gather",          STAGE_PRE_RENDER, RES_PHOTONS,                  RES_CAUSTICS,          false, false, photonsToRender },
+    { PASS_PHOTONS,        "photons",         STAGE_PRE_RENDER, RES_SUN_DEPTH | RES_WAVES,    RES_PHOTONS,           false, false, photonsToRender },
+    { PASS_GATHER,         "gather",          STAGE_PRE_RENDER, RES_PHOTONS | RES_WAVES,      RES_CAUSTICS,          false, false, photonsToRender },
     { PASS_REFLECTION,     "reflection",      STAGE_PRE_RENDER, 0,                            RES_REFLECTION,        true,  true,  reflectionWanted },
-    { PASS_REFRACTION,     "refraction",      STAGE_PRE_RENDER, 0,                            RES_REFRACTION,        true,  true,  refractionWanted },
-    { PASS_GLOW_HIGHLIGHT, "glow highlight",  STAGE_PRE_RENDER, 0,                            RES_GLOW_HIGHLIGHT,    false, true,  glowWanted },
+    { PASS_REFRACTION,     "refraction",      STAGE_PRE_RENDER, RES_WAVES,                    RES_REFRACTION,        true,  true,  refractionWanted },
+    { PASS_GLOW_HIGHLIGHT, "glow highlight",  STAGE_PRE_RENDER, RES_WAVES,                    RES_GLOW_HIGHLIGHT,    false, true,  glowWanted },
     { PASS_GLOW_BLUR_H,    "glow blur x",     STAGE_PRE_RENDER, RES_GLOW_HIGHLIGHT,           RES_GLOW_HALF_BLURRED, false, true,  always },
     { PASS_GLOW_BLUR_V,    "glow blur y",     STAGE_PRE_RENDER, RES_GLOW_HALF_BLURRED,        RES_GLOW,              false, true,  always },
     { PASS_SURFACE,        "surface",         STAGE_UNDERLAY,   kWaterInputs,                 RES_VIEW_IMAGE,        false, true,  waterInView },
@@ -71,9 +72,13 @@ PassPlan osgWater::planPasses(const FrameFacts& f)
         const PassRow& row = kTable[i];
         if (!(row.writes & needed) || !row.wanted(f)) continue;
         plan._runs |= 1u << row.id;
-        needed |= row.reads;
-        // a scene pass reads the caustics where it sees below the water, or, reflective, above it
-        if (row.litScene && f.caustics && (seesUnderWater || f.reflectedCaustics)) needed |= RES_CAUSTICS | RES_SUN_DEPTH;
+        unsigned reads = row.reads;
+        // a scene pass reads the caustics where it sees below the water, or, reflective, above it;
+        // caustics the scene program makes itself read the waves
+        if (row.litScene && f.caustics && (seesUnderWater || f.reflectedCaustics))
+            reads |= RES_CAUSTICS | RES_SUN_DEPTH | (f.causticsInScene ? RES_WAVES : 0u);
+        needed |= reads;
+        plan._reads |= reads;
     }
     return plan;
 }

@@ -25,7 +25,10 @@ enum PassResource : unsigned {
     RES_GLOW_HALF_BLURRED = 1u << 6,
     RES_GLOW = 1u << 7,
     RES_VIEW_IMAGE = 1u << 8,     //!< the view's own image: what every frame is for
-    RES_ENVIRONMENT = 1u << 9     //!< the environment cube map
+    RES_ENVIRONMENT = 1u << 9,    //!< the environment cube map
+    RES_WAVES = 1u << 10          //!< the waves as of the frame's time: the wind's cascade textures and the
+                                  //!< sum's phases, an input no row writes (the view's cull brings them up
+                                  //!< to the frame when a running row reads them)
 };
 
 //! Where a pass draws.
@@ -101,10 +104,14 @@ public:
     //! Whether a running row needs this view's own passes (PassRow::perView).
     bool usesViewPasses() const;
     unsigned bits() const { return _runs; }
+    //! Whether a running row reads any of `resources` (PassResource bits), the caustics and the
+    //! sun's depth map included where a lit scene pass sees them.
+    bool reads(unsigned resources) const { return (_reads & resources) != 0; }
     std::string describe() const; //!< names of the passes that run, in order (tests, logs)
 private:
     friend OSGWATER_EXPORT PassPlan planPasses(const FrameFacts& facts);
     unsigned _runs = 0;
+    unsigned _reads = 0;
 };
 
 OSGWATER_EXPORT PassPlan planPasses(const FrameFacts& facts);

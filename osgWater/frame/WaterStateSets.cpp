@@ -195,6 +195,7 @@ void WaterStateSets::applyWind(detail::SpectralWaves* wind)
 
 void WaterStateSets::applyTime(const WaterSurface& surface, double t)
 {
+    std::lock_guard<std::mutex> guard(_timeLock);
     if (detail::SpectralWaves* wind = surface.getSpectralWaves()) wind->applyTime(t);
     osg::Uniform* pu = _water->getUniform("osgWater_WavePhases");
     for (unsigned int i = 0; i < WaterSurface::MAX_WAVES; ++i)

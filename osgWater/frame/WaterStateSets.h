@@ -7,6 +7,7 @@
 #include "shaders/ProgramLibrary.h"
 #include <osg/StateSet>
 #include <osg/TextureCubeMap>
+#include <mutex>
 
 namespace osgWater {
 
@@ -34,7 +35,8 @@ public:
 
     //! Uniforms and defines from settings and surface (call when either changed).
     void applySettings(const WaterSettings& settings, const WaterSurface& surface, DebugOutput debug);
-    //! Wave phases (the wind's cascades) for simulation time t.
+    //! The waves as of simulation time t: the sum's phases, the wind's cascade textures. Views
+    //! call it from their culls (in parallel, each for the frame's time) when a pass reads them.
     void applyTime(const WaterSurface& surface, double t);
     //! The plane-offset lookups' planes: height above the level for the reflection, depth below it
     //! for the refraction, metres.
@@ -51,6 +53,7 @@ private:
 
     osg::ref_ptr<ProgramLibrary> _programs; // first: the state sets below take theirs from it
     osg::ref_ptr<osg::StateSet> _scene, _water, _guest, _surfaceBin;
+    std::mutex _timeLock; // applyTime from the views' culls
 };
 
 }

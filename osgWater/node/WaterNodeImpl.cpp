@@ -193,10 +193,8 @@ void WaterNodeImpl::traverse(osg::NodeVisitor& nv)
 {
     if (nv.getVisitorType() == osg::NodeVisitor::UPDATE_VISITOR) {
         refreshStates();
-        if (nv.getFrameStamp()) {
-            _simulationTime = nv.getFrameStamp()->getSimulationTime();
-            _states.applyTime(*_surface, _simulationTime);
-        }
+        // (the waves are brought to this time by the culls whose passes read them)
+        if (nv.getFrameStamp()) _simulationTime = nv.getFrameStamp()->getSimulationTime();
         _node.osg::Group::traverse(nv);
         // bounds are computed lazily; views may cull in parallel threads: compute them here, once
         _node.getBound();
@@ -277,6 +275,9 @@ void WaterNodeImpl::cull(osgUtil::CullVisitor& cv)
         v.facts.causticsDone = true; // another view on this context rendered them meanwhile
         plan = planPasses(v.facts);
     }
+    // the waves' textures as of this frame, only for a frame that draws or reads them: with the
+    // water out of view (and no caustics to render) the cascades are neither filled nor uploaded
+    if (plan.reads(RES_WAVES)) _states.applyTime(*_surface, v.time);
 
     // 3. aim what runs: one SceneLighting for the view and every pass that draws the scene; the
     //    water shader's defines follow what runs
@@ -306,6 +307,7 @@ void WaterNodeImpl::warnIfScaledUnevenly(const osg::Matrixd& view)
 
 void WaterNodeImpl::cullAsGuest(osgUtil::CullVisitor& cv)
 {
+    if (cv.getFrameStamp()) _states.applyTime(*_surface, cv.getFrameStamp()->getSimulationTime()); // the guest draws the surface
     // the host pass's camera carries its lighting (clip plane, sun, fog); this water's scene and
     // its surface under the guest program go beneath it
     {
@@ -341,17 +343,23 @@ WaterNodeImpl::ViewFrame WaterNodeImpl::gatherFacts(osgUtil::CullVisitor& cv)
     ctx.truePositions = _debug == DEBUG_BOTTOM_HIT;
     warnIfScaledUnevenly(ctx.view);
     const osg::Vec3d eye = eyePosition(ctx.view);
-    const double eyeHeight = eyeHeightAboveSurface(eye, t);
-    ctx.eyeBelow = eyeHeight < 0.0;
-    ctx.fovExtension = s.fovExtensionAt(eyeHeight);
-
     // is the water in view? The surface's box, not its sphere: a flat lake's sphere reaches far
     // above and below it
     const osg::BoundingBox& water = _surface->getBoundingBox();
+    const bool boxCulled = cv.isCulled(water);
+    const bool boxSeen = !boxCulled && (water.contains(eye) ||
+                                        boxInsidePlanes(water, cv.getCurrentCullingSet().getFrustum().getPlaneList()));
+    // the eye's height over the waves under it; outside their band, and with nothing of them in
+    // view, its height over the level has the same sign and the waves are not evaluated (the wind's
+    // are a few milliseconds of FFTs a frame)
+    double eyeHeight = eye.z() - ctx.level;
+    if (boxSeen || std::abs(eyeHeight) <= _surface->getMaxAmplitude()) eyeHeight = eyeHeightAboveSurface(eye, t);
+    ctx.eyeBelow = eyeHeight < 0.0;
+    ctx.fovExtension = s.fovExtensionAt(eyeHeight);
+
     FrameFacts& f = v.facts;
     f.eyeBelow = ctx.eyeBelow;
-    f.waterInView = !cv.isCulled(water) && (ctx.eyeBelow || water.contains(eye) ||
-                                            boxInsidePlanes(water, cv.getCurrentCullingSet().getFrustum().getPlaneList()));
+    f.waterInView = boxSeen || (!boxCulled && ctx.eyeBelow);
     f.reflectionEnabled = s.getReflectionEnabled();
     f.refractionEnabled = s.getRefractionEnabled();
     // never over debug outputs: they are data, and the glow would add light to coordinates

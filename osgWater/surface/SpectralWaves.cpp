@@ -180,9 +180,23 @@ osg::Vec3d SpectralWaves::normal(double x, double y, double t) const
 void SpectralWaves::applyTime(double t)
 {
     std::lock_guard<std::mutex> guard(_lock);
-    const double before = _cascades.time();
     at(t);
-    if (_cascades.time() != before) fill();
+    if (_cascades.time() != _textureTime) {
+        fill();
+        _textureTime = _cascades.time();
+    }
+}
+
+double SpectralWaves::evaluatedTime() const
+{
+    std::lock_guard<std::mutex> guard(_lock);
+    return _cascades.time();
+}
+
+double SpectralWaves::textureTime() const
+{
+    std::lock_guard<std::mutex> guard(_lock);
+    return _textureTime;
 }
 
 void SpectralWaves::fill()

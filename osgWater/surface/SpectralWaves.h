@@ -35,6 +35,10 @@ public:
 
     //! The texture's texels made those of time t (once a frame, the frame's time).
     void applyTime(double t);
+    //! The time the cascades were last evaluated at (by a query or by applyTime), and the time the
+    //! texture's texels are of.
+    double evaluatedTime() const;
+    double textureTime() const;
     osg::Texture2DArray* texture() const { return _texture.get(); }
     //! The same layers' heights alone, level 0 (R32F): what the sight ray's search reads. Choppy,
     //! (h, Dx, Dy, 0) (RGBA32F): the displacement the shaders invert as the CPU does.
@@ -83,6 +87,7 @@ private:
     std::vector<unsigned int> _layers; // the cascades that hold waves, one texture layer each
     std::vector<double> _cascadeBound;
     double _heightBound, _slopeBound, _stretchBound, _tilesMeanSquareSlope;
+    double _textureTime = 0.0;
     osg::ref_ptr<osg::Texture2DArray> _texture, _heights, _jacobians;
     std::vector<osg::ref_ptr<osg::Image>> _images, _heightImages, _jacobianImages;
 };
