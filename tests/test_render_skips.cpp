@@ -3,10 +3,12 @@
 // every planned pass runs in full.
 #include "node/WaterNodeImpl.h"
 #include "GLHarness.h"
+#include "passes/GlowPasses.h"
 #include "surface/SpectralWaves.h"
 #include <osgWater/WaterNode>
 #include <algorithm>
 #include <cmath>
+#include <iostream>
 
 using namespace testing_gl;
 using namespace osgWater;
@@ -207,19 +209,29 @@ TEST(Skips, TheWindsWavesAreEvaluatedOnlyForAFrameThatDrawsOrReadsThem)
     EXPECT_LE(largestDifference(resumed.get(), h2.readColor().get()), 1.0f / 255.0f);
 }
 
-TEST(Skips, TheGlowIsDrawnOnlyWhereTheHighlightCanReach)
+namespace {
+// a small highlight 25 degrees below the horizon, in view from (0, 0, 3) towards (0, 10, 0)
+osg::ref_ptr<WaterNode> glowingLake()
 {
-    Harness h(200, 150);
-    REQUIRE_GL(h);
     osg::ref_ptr<WaterNode> water = new WaterNode;
     water->getSurface()->setWaves({ makeWave(1.0f, 0.2f, 5.0f, 0.01f) });
     water->getSurface()->setSize(400.0f);
     WaterSettings* s = water->getSettings();
     s->setCausticsEnabled(false);
-    s->setSunDirection(osg::Vec3(0.1f, 0.9f, 0.42f)); // its highlight 25 degrees below the horizon, in view
-    s->setGlowExponent(2000.0f); // a small highlight: a small part of the view
+    s->setSunDirection(osg::Vec3(0.1f, 0.9f, 0.42f));
+    s->setGlowExponent(2000.0f);
     s->setGlowIntensity(4.0f);
     water->addChild(checkerPlane(-2.0f, 200.0f, 1.0f));
+    return water;
+}
+}
+
+TEST(Skips, TheGlowIsDrawnOnlyWhereTheHighlightCanReach)
+{
+    Harness h(200, 150);
+    REQUIRE_GL(h);
+    osg::ref_ptr<WaterNode> water = glowingLake(); // a small highlight: a small part of the view
+    WaterSettings* s = water->getSettings();
     h.setScene(water.get());
     h.lookAt(osg::Vec3d(0, 0, 3), osg::Vec3d(0, 10, 0));
 
@@ -237,4 +249,70 @@ TEST(Skips, TheGlowIsDrawnOnlyWhereTheHighlightCanReach)
     const osg::Viewport* vp = g->getHighlightCamera()->getViewport();
     EXPECT_LT(vp->width() * vp->height(), 0.75 * g->getWidth() * g->getHeight()) << "the highlight pass draws a part";
     EXPECT_LE(largestDifference(f.full.get(), f.skipped.get()), 1.0f / 255.0f);
+}
+
+// The composite adds the glow in horizontal bands, each drawn only where the last blur counted a
+// texel bright enough to show (GlowBands): its fragments are exactly the pixels of the bands whose
+// rows of the blurred glow hold light, and the image is the one with every band drawn.
+TEST(Skips, TheGlowIsAddedOnlyInTheBandsItReaches)
+{
+    Harness h(200, 160);
+    REQUIRE_GL(h);
+    osg::ref_ptr<WaterNode> water = glowingLake();
+    // a wall 4 m ahead hides the highlight's lower half: rows the highlight's cone reaches, dark
+    water->addChild(litQuad(osg::Vec3(-20, 4, -2), osg::Vec3(20, 4, -2), osg::Vec3(20, 4, 0.8f), osg::Vec3(-20, 4, 0.8f)));
+    water->setPassTimingEnabled(true);
+    h.setScene(water.get());
+    h.lookAt(osg::Vec3d(0, 0, 3), osg::Vec3d(0, 10, 0));
+    auto frames = [&] {
+        for (int i = 0; i < 3; ++i) h.frame(1.0); // measures are read a frame late
+        return h.readColor();
+    };
+    water->setSkippingEnabled(false);
+    osg::ref_ptr<osg::Image> full = frames();
+    const GlowPasses* g = osgWater::internals(*water).getViewPasses(h.camera())->getGlow();
+    ASSERT_NE(g, nullptr);
+    // every band drawn: the shader's invocations per pixel (the bands' quads add helper pixels
+    // along their diagonals, which a rasteriser shades in 2 x 2 blocks)
+    const osg::Scissor* sc = g->getCompositeScissor();
+    const double perPixel = g->getCompositeMeasure().fragments / double(sc->width() * sc->height());
+    EXPECT_GE(perPixel, 1.0);
+    EXPECT_LT(perPixel, 1.3);
+
+    water->setSkippingEnabled(true);
+    osg::ref_ptr<osg::Image> banded = frames();
+    osg::ref_ptr<osg::Image> glow = h.readTexture(g->getGlowTexture());
+    ASSERT_TRUE(glow.valid());
+    const int B = GlowBands::BANDS, H = glow->t();
+    std::vector<bool> lit(B, false);
+    for (int k = 0; k < B; ++k) {
+        // the rows whose centres the band's counted quad covers
+        const double r0 = std::max(0.0, double(k) * H / B - GlowBands::MARGIN), r1 = std::min(double(H), double(k + 1) * H / B + GlowBands::MARGIN);
+        for (int y = 0; y < H; ++y)
+            if (y + 0.5 >= r0 && y + 0.5 < r1)
+                for (int x = 0; x < glow->s(); ++x)
+                    if (std::max({ pixel(glow.get(), x, y)[0], pixel(glow.get(), x, y)[1], pixel(glow.get(), x, y)[2] }) > 0.0f)
+                        lit[k] = true;
+    }
+    // the composite's pixels: those of its scissor in a lit band (band k holds the view's rows whose
+    // centres lie in [k, k + 1) view heights / B)
+    const int viewHeight = int(h.camera()->getViewport()->height());
+    double pixels = 0.0;
+    std::vector<bool> inReach(B, false);
+    for (int y = sc->y(); y < sc->y() + sc->height(); ++y) {
+        const int k = std::min(B - 1, int(std::floor((y + 0.5) * B / viewHeight)));
+        inReach[k] = true;
+        if (lit[k]) pixels += sc->width();
+    }
+    int bandsInReach = 0, litBands = 0;
+    for (int k = 0; k < B; ++k) {
+        bandsInReach += inReach[k];
+        litBands += inReach[k] && lit[k];
+    }
+    EXPECT_GT(litBands, 0) << "the glow must show for the test to mean anything";
+    EXPECT_LT(litBands, bandsInReach) << "a band the highlight's cone reaches but its light does not";
+    std::cout << litBands << " of " << bandsInReach << " bands lit, " << g->getCompositeMeasure().fragments << " fragments for "
+              << pixels << " pixels\n";
+    EXPECT_NEAR(g->getCompositeMeasure().fragments, perPixel * pixels, 0.05 * perPixel * pixels);
+    EXPECT_LE(largestDifference(full.get(), banded.get()), 1.0f / 255.0f);
 }

@@ -22,13 +22,18 @@ osg::Geode* osgWater::makeScreenTriangle(float z, const char* name)
     v->push_back(osg::Vec3(-1.0f, 3.0f, z));
     g->setVertexArray(v.get());
     g->addPrimitiveSet(new osg::DrawArrays(GL_TRIANGLES, 0, 3));
-    g->setUseDisplayList(false);
-    g->setUseVertexBufferObjects(true);
-    g->setComputeBoundingBoxCallback(new NoBound);
-    g->setCullingActive(false);
+    setUpScreenGeometry(g.get());
     osg::Geode* geode = new osg::Geode;
     geode->setName(name);
     geode->addDrawable(g.get());
     geode->setCullingActive(false);
     return geode;
+}
+
+void osgWater::setUpScreenGeometry(osg::Geometry* g)
+{
+    g->setUseDisplayList(false);
+    g->setUseVertexBufferObjects(true);
+    g->setComputeBoundingBoxCallback(new NoBound);
+    g->setCullingActive(false);
 }

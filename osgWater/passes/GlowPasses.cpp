@@ -79,10 +79,23 @@ GlowPasses::GlowPasses(osg::Group* scene, osg::StateSet* sceneState, osg::StateS
     _blurState->setAttributeAndModes(_blurScissor.get());
     _blurState->setDataVariance(osg::Object::DYNAMIC);
     _glowTexels.set(0, 0, _width, _height);
-    _blur[0] = makeBlurCamera(_highlightTex.get(), _blurTex[0].get(), osg::Vec2f(1.0f / _width, 0.0f), PASS_GLOW_BLUR_H);
-    _blur[1] = makeBlurCamera(_blurTex[0].get(), _blurTex[1].get(), osg::Vec2f(0.0f, 1.0f / _height), PASS_GLOW_BLUR_V);
+    // the last blur counts, band by band, where the glow shows; the composite adds it only there
+    _bands = new GlowBands;
+    _blur[0] = makeBlurCamera(_highlightTex.get(), _blurTex[0].get(), osg::Vec2f(1.0f / _width, 0.0f), PASS_GLOW_BLUR_H,
+                              makeScreenTriangle(-1.0f, "osgWater.glowBlurTriangle"));
+    osg::ref_ptr<osg::Geode> counted = new osg::Geode;
+    counted->setName("osgWater.glowBlurBands");
+    counted->addDrawable(_bands->makeCountedBands(_height));
+    _blur[1] = makeBlurCamera(_blurTex[0].get(), _blurTex[1].get(), osg::Vec2f(0.0f, 1.0f / _height), PASS_GLOW_BLUR_V,
+                              counted.get());
+    // its texels too faint to show are left at the cleared zero, so a band of them counts none
+    _blur[1]->getStateSet()->setDefine("OSGWATER_GLOW_CUT");
+    _blur[1]->getStateSet()->addUniform(new osg::Uniform("osgWater_GlowCut", 0.0f));
 
-    _composite = makeScreenTriangle(-1.0f, "osgWater.glowComposite");
+    _composite = new osg::Geode;
+    _composite->setName("osgWater.glowComposite");
+    _composite->addDrawable(_bands->makeConditionalBands(-1.0f));
+    _composite->setCullingActive(false);
     osg::StateSet* c = _composite->getOrCreateStateSet();
     c->setAttribute(programs.get("osgWater.glowAdd", "screen.vert", "glowadd.frag"));
     c->setTextureAttribute(UNIT_PASS_INPUT, _blurTex[1].get());
@@ -109,7 +122,8 @@ GlowPasses::GlowPasses(osg::Group* scene, osg::StateSet* sceneState, osg::StateS
     c->setDataVariance(osg::Object::DYNAMIC);
 }
 
-osg::Camera* GlowPasses::makeBlurCamera(osg::Texture2D* input, osg::Texture2D* output, const osg::Vec2f& step, PassId pass)
+osg::Camera* GlowPasses::makeBlurCamera(osg::Texture2D* input, osg::Texture2D* output, const osg::Vec2f& step, PassId pass,
+                                       osg::Geode* screen)
 {
     osg::Camera* cam = new osg::Camera;
     cam->setName("osgWater.GlowBlur");
@@ -121,8 +135,7 @@ osg::Camera* GlowPasses::makeBlurCamera(osg::Texture2D* input, osg::Texture2D* o
     cam->attach(osg::Camera::COLOR_BUFFER, output);
     cam->setViewMatrix(osg::Matrixd());
     cam->setProjectionMatrix(osg::Matrixd());
-    osg::Geode* tri = makeScreenTriangle(-1.0f, "osgWater.glowBlurTriangle");
-    osg::StateSet* ss = tri->getOrCreateStateSet();
+    osg::StateSet* ss = screen->getOrCreateStateSet();
     ss->setTextureAttribute(UNIT_PASS_INPUT, input);
     ss->addUniform(new osg::Uniform("osgWater_GlowStep", step));
     // both blur passes share the program, the weights' uniforms and the scissor (merged, not
@@ -131,7 +144,7 @@ osg::Camera* GlowPasses::makeBlurCamera(osg::Texture2D* input, osg::Texture2D* o
     cam->getStateSet()->setDataVariance(osg::Object::DYNAMIC); // the weights follow the settings
     // drawn from a cull callback, as the other passes draw their scenes
     osg::ref_ptr<DrawNodes> draw = new DrawNodes;
-    draw->addNode(tri, {});
+    draw->addNode(screen, {});
     cam->setCullCallback(draw.get());
     return cam;
 }
@@ -290,6 +303,13 @@ void GlowPasses::update(const PassContext& ctx, WaterSurface* surface, const osg
         setBlurWeights(blurWeights(_radius));
     }
     _composite->getStateSet()->getUniform("osgWater_GlowIntensity")->set(s.getGlowIntensity());
+    // the cut: the composite adds intensity x glow, which changes no display value by half a level
+    // below it, even on black where the sRGB curve is steepest (12.92 display per linear unit)
+    _bands->setEnabled(confine);
+    // (an 8-bit target rounds anything under half its level to that zero anyway)
+    const float visible = 0.5f / 255.0f / (12.92f * std::max(s.getGlowIntensity(), 1e-6f));
+    const float cut = !confine ? 0.0f : _float ? visible : std::max(visible, 0.49f / 255.0f);
+    _blur[1]->getStateSet()->getUniform("osgWater_GlowCut")->set(cut);
 }
 
 void GlowPasses::setTimingEnabled(bool on)
@@ -326,4 +346,5 @@ void GlowPasses::releaseGLObjects(osg::State* state) const
 {
     for (const osg::Camera* c : { _highlight.get(), _blur[0].get(), _blur[1].get() }) releasePassGLObjects(c, state);
     _composite->releaseGLObjects(state);
+    _bands->releaseGLObjects(state);
 }

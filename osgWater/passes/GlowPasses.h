@@ -4,6 +4,7 @@
 
 #include "frame/PassCamera.h"
 #include "frame/PassMeter.h"
+#include "passes/GlowBands.h"
 #include <osgWater/WaterSurface>
 #include <osg/Geode>
 #include <osg/Scissor>
@@ -45,6 +46,8 @@ public:
     void update(const PassContext& ctx, WaterSurface* surface, const osg::Viewport& viewport, bool confine = true);
     //! The glow target's texels that can be non-zero this frame (x, y, width, height).
     const osg::Vec4i& getGlowTexels() const { return _glowTexels; }
+    //! The view's pixels the composite may add to (the blurred reach, in the viewport).
+    const osg::Scissor* getCompositeScissor() const { return _compositeScissor.get(); }
 
     //! The camera of a glow row of the pass table (highlight, blur x, blur y), or nullptr.
     osg::Camera* getPassCamera(PassId pass) const;
@@ -75,7 +78,8 @@ public:
 protected:
     virtual ~GlowPasses() {}
     void setBlurWeights(const std::vector<float>& weights);
-    osg::Camera* makeBlurCamera(osg::Texture2D* input, osg::Texture2D* output, const osg::Vec2f& step, PassId pass);
+    osg::Camera* makeBlurCamera(osg::Texture2D* input, osg::Texture2D* output, const osg::Vec2f& step, PassId pass,
+                                osg::Geode* screen);
 
     int _width, _height;
     bool _float;
@@ -85,6 +89,7 @@ protected:
     osg::ref_ptr<osg::Texture2D> _highlightTex, _blurTex[2];
     osg::ref_ptr<osg::StateSet> _occluderState, _glowState, _blurState;
     osg::ref_ptr<osg::Geode> _composite;
+    osg::ref_ptr<GlowBands> _bands; // where the composite adds the glow
     osg::ref_ptr<DrawNodes> _highlightDraw;
     osg::ref_ptr<osg::Scissor> _blurScissor, _compositeScissor;
     osg::Vec4i _glowTexels;
