@@ -570,6 +570,15 @@ TEST(Osgwaterbench, QuickRunWritesValidJson)
     }
     EXPECT_EQ(j[0]["technique"], "default");
     EXPECT_EQ(j[1]["lookup"], "one-step");
+    // the loops' work, counted: one depth read a pixel for the one-step lookup, more for the
+    // search (one to start and at most one a step), never more than its steps allow
+    EXPECT_NEAR(j[1]["work_refraction_reads"].get<double>(), 1.0, 1e-6);
+    const double searchReads = j[0]["work_refraction_reads"].get<double>();
+    EXPECT_GT(searchReads, 1.5);
+    EXPECT_LE(searchReads, 1.0 + j[0]["steps"].get<double>());
+    EXPECT_GT(j[0]["work_reflection_reads"].get<double>(), 0.0);
+    EXPECT_GT(j[0]["work_march_heights"].get<double>(), 0.0);
+    EXPECT_NE(md.find("### Work counted"), std::string::npos);
     std::ifstream csv(out + "/results.csv");
     std::string header;
     ASSERT_TRUE(std::getline(csv, header));

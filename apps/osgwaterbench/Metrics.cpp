@@ -87,10 +87,43 @@ bool shownPoint(const osg::Vec4f& est, const Estimate& e, const RayCaster& scene
     return true;
 }
 
+WorkCounts WorkCounts::pooledWith(const WorkCounts& o) const
+{
+    if (o.pixels == 0) return *this;
+    if (pixels == 0) return o;
+    WorkCounts w;
+    w.pixels = pixels + o.pixels;
+    const double a = double(pixels) / double(w.pixels), b = 1.0 - a;
+    w.refractionReads = a * refractionReads + b * o.refractionReads;
+    w.reflectionReads = a * reflectionReads + b * o.reflectionReads;
+    w.marchHeights = a * marchHeights + b * o.marchHeights;
+    return w;
+}
+
+WorkCounts countWork(const osg::Image* work)
+{
+    WorkCounts w;
+    if (!work) return w;
+    double sum[3] = { 0.0, 0.0, 0.0 };
+    for (int y = 0; y < work->t(); ++y)
+        for (int x = 0; x < work->s(); ++x) {
+            const osg::Vec4f c = px(work, x, y);
+            if (!(c.w() > 1.5f && c.w() < 2.5f)) continue; // not water
+            for (int i = 0; i < 3; ++i) sum[i] += c[i];
+            ++w.pixels;
+        }
+    if (w.pixels) {
+        w.refractionReads = sum[0] / double(w.pixels);
+        w.reflectionReads = sum[1] / double(w.pixels);
+        w.marchHeights = sum[2] / double(w.pixels);
+    }
+    return w;
+}
+
 ViewErrors measureView(const ReferenceImage& ref, const Estimate& e, const RayCaster& scene)
 {
     ViewErrors v;
-    for (const osg::Image* img : { e.color.get(), e.bottom.get(), e.reflection.get(), e.fresnel.get() })
+    for (const osg::Image* img : { e.color.get(), e.bottom.get(), e.reflection.get(), e.fresnel.get(), e.work.get() })
         if (img) v.nanPixels += countNonFinite(img);
     v.waterPixels = ref.waterPixels;
     for (int y = 0; y < ref.height; ++y)

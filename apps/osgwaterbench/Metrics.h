@@ -19,11 +19,25 @@ struct Quantiles {
 //! Quantiles of v (sorted in place); NaN fields when v is empty.
 Quantiles quantiles(std::vector<float>& v);
 
+//! The per-pixel loops' work over the render's water (DEBUG_WORK), counted by the shader, not timed:
+//! what a GPU would pay whatever this machine's load. Means per water pixel; NaN without pixels.
+struct WorkCounts {
+    size_t pixels = 0;
+    double refractionReads = std::numeric_limits<double>::quiet_NaN(); //!< the refraction search's depth reads
+    double reflectionReads = refractionReads;                         //!< the reflection search's
+    double marchHeights = refractionReads;                            //!< the wave heights the march evaluated
+    //! The means over both sets' pixels together.
+    WorkCounts pooledWith(const WorkCounts& o) const;
+};
+//! The counts of a DEBUG_WORK image (its water pixels: alpha 2).
+WorkCounts countWork(const osg::Image* work);
+
 //! What the renderer estimated for one view (read back after a frame of each debug output).
 struct Estimate {
     osg::ref_ptr<osg::Image> color, bottom, reflection, fresnel; //!< float RGBA, the view's size
     osg::ref_ptr<osg::Image> drawn;    //!< the drawn mesh's point under each water pixel (DEBUG_DRAWN_SURFACE)
     osg::ref_ptr<osg::Image> shaded;   //!< the surface point each water pixel shades (DEBUG_SURFACE)
+    osg::ref_ptr<osg::Image> work;     //!< the loops' work at each water pixel (DEBUG_WORK)
     osg::Vec3d eye;                    //!< the view's eye, local frame
     double pixelsPerRadian = 0.0;      //!< the view's focal length in pixels (at the centre of the view)
     osg::Matrixd refractionView;       //!< local -> refraction pass eye space

@@ -79,7 +79,7 @@ Estimate Probe::capture(osgWater::WaterNode& water, double t)
     const std::pair<osgWater::DebugOutput, osg::ref_ptr<osg::Image> Estimate::*> outputs[] = {
         { osgWater::DEBUG_BOTTOM_HIT, &Estimate::bottom },     { osgWater::DEBUG_REFLECTION_LOOKUP, &Estimate::reflection },
         { osgWater::DEBUG_FRESNEL, &Estimate::fresnel },       { osgWater::DEBUG_DRAWN_SURFACE, &Estimate::drawn },
-        { osgWater::DEBUG_SURFACE, &Estimate::shaded } };
+        { osgWater::DEBUG_SURFACE, &Estimate::shaded },        { osgWater::DEBUG_WORK, &Estimate::work } };
     for (const auto& [output, image] : outputs) {
         water.setDebugOutput(output);
         _viewer->frame(t);

@@ -72,6 +72,9 @@ nlohmann::json toJson(const Record& r)
     j["image_delta_e_p95_frame"] = number(r.image.deltaEP95Frame);
     j["image_reference_noise_delta_e"] = number(r.image.referenceNoiseWater);
     j["nan_pixels"] = r.nanPixels;
+    j["work_refraction_reads"] = number(r.work.refractionReads);
+    j["work_reflection_reads"] = number(r.work.reflectionReads);
+    j["work_march_heights"] = number(r.work.marchHeights);
     return j;
 }
 
@@ -431,6 +434,17 @@ bool writeDocs(const std::string& dir, const RunInfo& info, const std::vector<Re
            << " | " << pct(s.causticsRmse) << (std::isfinite(s.causticsNoise) ? " (" + pct(s.causticsNoise) + ")" : "")
            << " | " << pct(s.coverageMismatchShare) << " | " << fmt(s.drawnSurfacePx.median, 3) << " | "
            << fmt(s.drawnSurfacePx.p99, 2) << " | " << pct(s.shadedPointCm.over2) << " | " << s.nanPixels << " |\n";
+
+    md << "\n### Work counted\n\n"
+       << "The per-pixel loops' work, counted by the water shader (its DEBUG_WORK output) and averaged over the "
+          "render's water pixels of every view: the depth texels the refraction and the reflection searches read, "
+          "and the wave heights the march to the surface evaluated. Unlike the frame time it does not depend on "
+          "this machine's load, and it is what a GPU pays per pixel.\n\n"
+       << "| technique | refraction depth reads | reflection depth reads | march heights | frame ms |\n"
+       << "|---|---|---|---|---|\n";
+    for (const Summary& s : summaries)
+        md << "| " << s.technique << " | " << fmt(s.work.refractionReads, 2) << " | " << fmt(s.work.reflectionReads, 2)
+           << " | " << fmt(s.work.marchHeights, 2) << " | " << fmt(s.frameMs, 1) << " |\n";
 
     md << "\n## Views (default technique)\n\n"
        << "Image: over the water pixels, and in brackets over the whole frame; the target (SSIM ≥ 0.95 and mean "

@@ -23,6 +23,7 @@ struct Record {
     size_t refractionCauses[CAUSE_COUNT] = {}; //!< the refraction's pixels over 2 px, by cause
     CausticsErrors causticsErrors;
     ImageErrors image; //!< the view as shown against the reference image
+    WorkCounts work;   //!< the per-pixel loops' work over the render's water
 };
 
 //! Pooled over every view of one technique.
@@ -47,6 +48,7 @@ struct Summary {
     double worstImageSsim = imageSsim, worstImageDeltaE = imageSsim;
     std::string worstImageView;
     size_t nanPixels = 0;
+    WorkCounts work; //!< every water pixel of every view
 };
 
 struct RunInfo {

@@ -34,6 +34,22 @@ Quantiles quantilesFrom(const json& j)
     return q;
 }
 
+json toJson(const WorkCounts& w)
+{
+    return { { "pixels", w.pixels }, { "refractionReads", number(w.refractionReads) },
+             { "reflectionReads", number(w.reflectionReads) }, { "marchHeights", number(w.marchHeights) } };
+}
+
+WorkCounts workFrom(const json& j)
+{
+    WorkCounts w;
+    w.pixels = j.at("pixels");
+    w.refractionReads = number(j.at("refractionReads"));
+    w.reflectionReads = number(j.at("reflectionReads"));
+    w.marchHeights = number(j.at("marchHeights"));
+    return w;
+}
+
 json toJson(const Record& r)
 {
     json j = { { "technique", r.technique }, { "view", r.view }, { "lookup", r.lookup }, { "fresnel", r.fresnel },
@@ -49,6 +65,7 @@ json toJson(const Record& r)
                { "fresnelError", toJson(r.fresnelError) }, { "drawnSurfacePx", toJson(r.drawnSurfacePx) },
                { "shadedPointCm", toJson(r.shadedPointCm) } };
     j["refractionCauses"] = json(std::vector<size_t>(std::begin(r.refractionCauses), std::end(r.refractionCauses)));
+    j["work"] = toJson(r.work);
     const CausticsErrors& c = r.causticsErrors;
     j["causticsErrors"] = { { "valid", c.valid }, { "relativeRmse", number(c.relativeRmse) },
                             { "referenceNoise", number(c.referenceNoise) }, { "meanReference", number(c.meanReference) },
@@ -108,6 +125,7 @@ Record recordFrom(const json& j)
     r.image.deltaEMeanFrame = number(e.at("deltaEMeanFrame"));
     r.image.deltaEP95Frame = number(e.at("deltaEP95Frame"));
     r.image.referenceNoiseWater = number(e.at("referenceNoiseWater"));
+    r.work = workFrom(j.at("work"));
     return r;
 }
 
@@ -125,7 +143,7 @@ json toJson(const Summary& s)
              { "worstCausticsNoise", number(s.worstCausticsNoise) }, { "worstCausticsView", s.worstCausticsView },
              { "imageSsim", number(s.imageSsim) }, { "imageDeltaE", number(s.imageDeltaE) },
              { "worstImageSsim", number(s.worstImageSsim) }, { "worstImageDeltaE", number(s.worstImageDeltaE) },
-             { "worstImageView", s.worstImageView }, { "nanPixels", s.nanPixels } };
+             { "worstImageView", s.worstImageView }, { "nanPixels", s.nanPixels }, { "work", toJson(s.work) } };
 }
 
 Summary summaryFrom(const json& j)
@@ -156,6 +174,7 @@ Summary summaryFrom(const json& j)
     s.worstImageDeltaE = number(j.at("worstImageDeltaE"));
     s.worstImageView = j.at("worstImageView");
     s.nanPixels = j.at("nanPixels");
+    s.work = workFrom(j.at("work"));
     return s;
 }
 

@@ -142,6 +142,7 @@ Summary summarize(const std::string& name, const std::vector<Record>& records, s
         drawn.insert(drawn.end(), errors[i].drawnSurfacePx.begin(), errors[i].drawnSurfacePx.end());
         shaded.insert(shaded.end(), errors[i].shadedPointCm.begin(), errors[i].shadedPointCm.end());
         fres.insert(fres.end(), errors[i].fresnel.begin(), errors[i].fresnel.end());
+        s.work = s.work.pooledWith(r.work);
         errors[i] = ViewErrors(); // pooled: free the per-pixel values
     }
     s.ratioInView = ratios.empty() ? std::numeric_limits<double>::quiet_NaN() : osgWaterApps::median(ratios);
@@ -447,6 +448,7 @@ int main(int argc, char** argv)
             r.tirMismatch = ve.tirMismatch;
             r.coverageMismatch = ve.coverageMismatch;
             r.nanPixels = ve.nanPixels;
+            r.work = countWork(e.work.get());
             if (e.color.valid()) {
                 const DisplayTransform display{ s->getExposure(), s->getToneCurve() };
                 osg::ref_ptr<osg::Image> side;
