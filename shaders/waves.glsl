@@ -79,6 +79,9 @@ vec4 waterSampleWithRoughness(vec2 p, float footprint)
     vec3 J = vec3(0.0);
 #endif
     vec4 r = vec4(osgWater_Level, 0.0, 0.0, osgWater_UnresolvedSlopes);
+    // (a cascade the footprint averages whole, its lod past the last level, reads its tile's mean:
+    // taking that from a uniform instead of the read saved no frame on the lake, 0.995x, 95%
+    // 0.982-1.021 over 16 pairs, and is not done)
     for (int c = 0; c < 5; ++c) {
         if (c >= osgWater_CascadeCount) break;
         vec4 s = osgWater_Cascades[c];
