@@ -18,9 +18,10 @@ bool environmentToRender(const FrameFacts& f) { return f.environment && f.enviro
 // what the water program reads
 const unsigned kWaterInputs = RES_REFLECTION | RES_REFRACTION | RES_ENVIRONMENT | RES_WAVES;
 
-// The frame, top to bottom. RES_WAVES: the programs that draw the surface or read it (the photons'
-// grid, the screen's procedural caustics, the virtual vertices, the highlight, the water program). Pre-render rows draw in this order (renderOrder), overlay rows after
-// the scene's bins in this order (renderBin).
+// The frame, top to bottom. Pre-render rows draw in this order (renderOrder), overlay rows after
+// the scene's bins in this order (renderBin). RES_WAVES: the programs that draw the surface or read
+// it (the photons' grid, the screen's procedural caustics, the virtual vertices, the highlight, the
+// water program).
 const PassRow kTable[PASS_COUNT] = {
     // id                   name               stage               reads                        writes                 litScene perView wanted
     { PASS_ENVIRONMENT,    "environment",     STAGE_PRE_RENDER, 0,                            RES_ENVIRONMENT,       false, false, environmentToRender },

@@ -4,7 +4,6 @@
 #include <osg/Notify>
 #include <osg/State>
 #include <algorithm>
-#include <functional>
 #include <vector>
 
 using namespace osgWater;
@@ -31,9 +30,8 @@ struct BandDraw : public osg::DrawArrays
     }
 };
 
-// quads over x in [-1, 1], y in [y0[k], y1[k]] (NDC), one primitive set each
-osg::Geometry* bandQuads(const std::vector<std::pair<float, float>>& ys, float z,
-                         const std::function<osg::PrimitiveSet*(int)>& band)
+// quads over x in [-1, 1], y in [y0[k], y1[k]] (NDC), one band's primitive set each
+osg::Geometry* bandQuads(const std::vector<std::pair<float, float>>& ys, float z, GlowBands* bands, bool counted)
 {
     osg::Geometry* g = new osg::Geometry;
     osg::ref_ptr<osg::Vec3Array> v = new osg::Vec3Array;
@@ -42,7 +40,7 @@ osg::Geometry* bandQuads(const std::vector<std::pair<float, float>>& ys, float z
                                      osg::Vec2f(1.0f, y.second) })
             v->push_back(osg::Vec3(c.x(), c.y(), z));
     g->setVertexArray(v.get());
-    for (int k = 0; k < int(ys.size()); ++k) g->addPrimitiveSet(band(k));
+    for (int k = 0; k < int(ys.size()); ++k) g->addPrimitiveSet(new BandDraw(bands, k, counted));
     setUpScreenGeometry(g); // (no display list: the queries and conditions reach GL each frame)
     return g;
 }
@@ -53,21 +51,22 @@ GlowBands::GlowBands() {}
 
 osg::Geometry* GlowBands::makeCountedBands(int height)
 {
-    // band k of the composite reads the target's rows k H / B - 1 to (k + 1) H / B + 1 (bilinear)
+    // band k of the composite reads the target's rows from k H / B - 1 to (k + 1) H / B + 1
+    // (bilinear): its count covers MARGIN rows each side
     const float h = float(std::max(height, 1));
     std::vector<std::pair<float, float>> ys;
     for (int k = 0; k < BANDS; ++k) {
         const float r0 = std::max(0.0f, k * h / BANDS - MARGIN), r1 = std::min(h, (k + 1) * h / BANDS + MARGIN);
         ys.emplace_back(2.0f * r0 / h - 1.0f, 2.0f * r1 / h - 1.0f);
     }
-    return bandQuads(ys, -1.0f, [this](int k) { return new BandDraw(this, k, true); });
+    return bandQuads(ys, -1.0f, this, true);
 }
 
 osg::Geometry* GlowBands::makeConditionalBands(float z)
 {
     std::vector<std::pair<float, float>> ys;
     for (int k = 0; k < BANDS; ++k) ys.emplace_back(2.0f * k / BANDS - 1.0f, 2.0f * (k + 1) / BANDS - 1.0f);
-    return bandQuads(ys, z, [this](int k) { return new BandDraw(this, k, false); });
+    return bandQuads(ys, z, this, false);
 }
 
 bool GlowBands::ready(osg::State& state, PerContext& c)
