@@ -35,10 +35,25 @@ void main()
     float dz = P.z - osgWater_Level;
     if (below ? dz < -osgWater_WaveBound : dz > osgWater_WaveBound) discard;
     vec3 C = osgWater_EyeLocal;
-    float fP = owSurfaceOffset(P);
-    if (below ? fP < 0.0 : fP >= 0.0) discard; // same side as the eye: the surface itself is drawn
-    // bisection: a stays on the eye's side (the CPU's verdict, OSGWATER_EYE_BELOW), b on the other
+    // The first point on the eye's side of the surface (the CPU's verdict, OSGWATER_EYE_BELOW) and
+    // the next one on the other: at distances from the eye halving from the near plane's, read
+    // from the eye outwards. An eye a hair from the water sees the surface cross its rays within
+    // millimetres of it, and some rays come back to the eye's side before the near plane; the
+    // near point alone would call them uncrossed.
     vec3 a = C, b = P;
+    bool crossed = false;
+#ifdef OSGWATER_GRID
+    for (int i = 15; i > 0 && !crossed; --i) {
+        vec3 m = C + (P - C) * exp2(-float(i));
+        if ((owSurfaceOffset(m) < 0.0) == below) a = m;
+        else { b = m; crossed = true; }
+    }
+#endif
+    if (!crossed) {
+        float fP = owSurfaceOffset(P);
+        if (below ? fP < 0.0 : fP >= 0.0) discard; // same side as the eye: the surface itself is drawn
+    }
+    // bisection: a stays on the eye's side, b on the other
     for (int i = 0; i < 16; ++i) {
         vec3 m = 0.5 * (a + b);
         bool mBelow = owSurfaceOffset(m) < 0.0;

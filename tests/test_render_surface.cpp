@@ -114,7 +114,9 @@ double coverageMismatch(Harness& h, const WaterNode& water, double t, size_t& wa
 // The eye a micrometre above, then below, the wave under it, looking along the water so the
 // horizon the crests make crosses the view. The ring under the eye is the wave's own height there
 // and the cells around it span a fraction of a pixel, so the drawn surface lies on the eye's side
-// where the waves do.
+// where the waves do. From below, a line of rays leaves the water within 3 mm of the eye and comes
+// back under it before the near plane: the cap must see those crossings (0.66% of the water's
+// pixels when it read the near point alone; 0.03% now).
 TEST(RenderSurface, WithTheEyeAMicrometreFromTheWaterItsRenderCoversWhatTheWavesCover)
 {
     Harness h(320, 240);

@@ -11,8 +11,8 @@
 // - a ray in the air that meets nothing has the sky's light: the WaterNode's osgWater::Sky, else
 //   the view's clear colour.
 // All in linear light; the view shows it exposed, through the tone curve, encoded.
-// The water is met where WaterSurface::intersect meets it: near the surface it steps a sixteenth of
-// the shortest wave, so a ray that clips a crest over less than that passes it.
+// The water is met where WaterSurface::intersect meets it: its steps cannot pass a crossing by the
+// waves' slope and curvature bounds, so a ray that clips a crest meets it.
 #pragma once
 #include "Reference.h"
 #include "SceneShading.h"

@@ -115,7 +115,7 @@ void setUpLayers(osg::Texture2DArray& t, unsigned int n, unsigned int layers, GL
 }
 
 SpectralWaves::SpectralWaves(const WaveCascades::Params& params)
-    : _cascades(params), _heightBound(0.0), _slopeBound(0.0), _stretchBound(0.0), _tilesMeanSquareSlope(0.0),
+    : _cascades(params), _heightBound(0.0), _slopeBound(0.0), _curvatureBound(0.0), _stretchBound(0.0), _tilesMeanSquareSlope(0.0),
       _texture(new osg::Texture2DArray),
       _heights(new osg::Texture2DArray)
 {
@@ -127,6 +127,8 @@ SpectralWaves::SpectralWaves(const WaveCascades::Params& params)
             _layers.push_back(c);
             _cascadeBound.push_back(HEIGHT_SIGMAS * std::sqrt(WaveCascades::bandVariance(params.sea, { _cascades.bands()[c] })));
         }
+    // (after the layers: choppyChord() asks whether any hold waves)
+    _curvatureBound = HEIGHT_SIGMAS * std::sqrt(_cascades.binCurvatureVariance()) * choppyChord() * choppyChord();
 
     const unsigned int n = _cascades.params().size, layers = std::max(cascadeCount(), 1u);
     setUpLayers(*_texture, n, layers, GL_RGBA32F_ARB, GL_RGBA, osg::Texture::LINEAR_MIPMAP_LINEAR);

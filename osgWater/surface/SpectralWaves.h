@@ -68,13 +68,17 @@ public:
     //! surface's slopes too: its steepest lie mid-flank, where the displacement hardly squeezes it
     //! (tested on the realised surface).
     double slopeBound() const { return _slopeBound; }
+    //! |d2h/du2| along any horizontal unit u stays below this (1/m): HEIGHT_SIGMAS standard
+    //! deviations of the curvatures the bins hold, times choppyChord() squared (a crest squeezed
+    //! sideways bends that much more sharply). The height query's step near the surface.
+    double curvatureBound() const { return _curvatureBound; }
     double maxPhaseSpeed() const { return _cascades.maxPhaseSpeed(); }
     //! The slopes' variance no cascade holds: the roughness of water whose texels are all resolved.
     double unresolvedSlopeVariance() const { return _cascades.unresolvedSlopeVariance(); }
     //! The water's mean square slope as of the texture's time: its tiles' mean |grad h|^2 (their
     //! last mip level) plus the unresolved. The roughness of a pixel wider than every tile.
     double meanSquareSlope() const;
-    //! The shortest wave the cascades hold (m): the height query's stepping scale.
+    //! The shortest wave the cascades hold (m).
     double shortestWave() const;
     static constexpr double HEIGHT_SIGMAS = 6.0;
 
@@ -86,7 +90,7 @@ private:
     mutable WaveCascades _cascades;
     std::vector<unsigned int> _layers; // the cascades that hold waves, one texture layer each
     std::vector<double> _cascadeBound;
-    double _heightBound, _slopeBound, _stretchBound, _tilesMeanSquareSlope;
+    double _heightBound, _slopeBound, _curvatureBound, _stretchBound, _tilesMeanSquareSlope;
     double _textureTime = 0.0;
     osg::ref_ptr<osg::Texture2DArray> _texture, _heights, _jacobians;
     std::vector<osg::ref_ptr<osg::Image>> _images, _heightImages, _jacobianImages;

@@ -458,31 +458,45 @@ bool WaterSurface::intersect(const osg::Vec3d& start, const osg::Vec3d& end, dou
         s1 = std::min(s1, tb);
         if (s0 > s1) return false;
     }
-    // signed height above the surface along the segment
+    // signed height above the surface along the segment, and its rate of change dz - grad h . dxy
     auto above = [&](double s) {
         const osg::Vec3d p = start + d * s;
         return p.z() - (usesGrid() ? height(p.x(), p.y(), t) : _level);
     };
     const detail::SpectralWaves* wind = getSpectralWaves();
-    double shortest = 1e30;
-    if (wind) shortest = wind->shortestWave();
-    else
-        for (const Wave& w : _waves) shortest = std::min(shortest, double(w.wavelength));
-    const double dxy = osg::Vec2d(d.x(), d.y()).length();
-    // steps of at least a sixteenth of the shortest wave, longer where the segment is far from the
-    // surface: its height above it changes by at most |dz| + slope |dxy| per unit of s, so a step
-    // of (height / that) cannot pass a crossing
     const bool waves = usesGrid() && (wind ? wind->heightBound() > 0.0 : !_waves.empty());
+    auto rise = [&](double s) {
+        if (!waves) return d.z();
+        const osg::Vec3d p = start + d * s, n = this->normal(p.x(), p.y(), t);
+        return d.z() + (n.x() * d.x() + n.y() * d.y()) / std::max(n.z(), 1e-12);
+    };
+    // |d2h/du2| along any horizontal unit u: at most sum a k^2 for the waves; the wind's bound
+    double curvature = 0.0;
+    if (waves && wind) curvature = wind->curvatureBound();
+    else if (waves)
+        for (const Wave& w : _waves) curvature += std::fabs(double(w.amplitude)) * w.wavenumber() * w.wavenumber();
+    const double dxy = osg::Vec2d(d.x(), d.y()).length();
+    // Steps that cannot pass a crossing, the longer of two bounds on the height above the surface
+    // f: it changes by at most |dz| + slope |dxy| per unit of s (a step of |f| / that), and it
+    // bends by at most c = curvature |dxy|^2, so g = |f| moving at g' stays above
+    // g + g' x - c x^2 / 2, positive for x < 2 g / (sqrt(g'^2 + 2 c g) - g'). A ray that clips a
+    // crest over a few millimetres meets it. One that touches a crest exactly is approached in ever
+    // shorter steps, so none is shorter than 1e-5 of the segment (1e5 steps at most).
     const double rate = std::fabs(d.z()) + (waves ? getMaxSlope() : 0.0) * dxy;
-    // (never more than 1e5 of the shortest steps over the whole segment, as a huge water may ask)
-    const double minStep = waves && dxy > 0.0 ? std::max((shortest / 16.0) / dxy, (s1 - s0) * 1.0e-5) : (s1 - s0);
+    const double bend = curvature * dxy * dxy;
+    const double minStep = (s1 - s0) * 1.0e-5;
+    auto safeStep = [&](double s, double f) {
+        const double g = std::fabs(f), dg = f > 0.0 ? rise(s) : -rise(s);
+        const double away = std::sqrt(dg * dg + 2.0 * bend * g) - dg;
+        const double bent = away > 0.0 ? 2.0 * g / away : 1e30;
+        return std::max(minStep, 0.999 * std::max(rate > 0.0 ? g / rate : 1e30, bent));
+    };
     // the first sign change between samples, then bisection (lo keeps the start's side)
     double sa = s0, fa = above(s0);
     bool found = fa == 0.0;
     ratio = s0;
     while (!found && sa < s1) {
-        const double step = rate > 0.0 ? std::max(minStep, 0.999 * std::fabs(fa) / rate) : minStep;
-        const double sb = std::min(s1, sa + step);
+        const double sb = std::min(s1, sa + safeStep(sa, fa));
         if (!(sb > sa)) break; // a step below the precision of s: nothing left to sample
         const double fb = above(sb);
         if ((fb > 0.0) != (fa > 0.0) || fb == 0.0) {

@@ -200,7 +200,7 @@ double WaveCascades::bandVariance(const spectrum::WindSea& sea, const std::vecto
 }
 
 WaveCascades::WaveCascades(const Params& params)
-    : _params(params), _time(0.0), _binVariance(0.0), _binSlopeVariance(0.0), _binStretchVariance{ 0.0, 0.0 }, _maxPhaseSpeed(0.0),
+    : _params(params), _time(0.0), _binVariance(0.0), _binSlopeVariance(0.0), _binCurvatureVariance(0.0), _binStretchVariance{ 0.0, 0.0 }, _maxPhaseSpeed(0.0),
       _plans(new Plans)
 {
     unsigned int n = 16;
@@ -260,6 +260,7 @@ WaveCascades::WaveCascades(const Params& params)
                 cascade.bins.push_back(bin);
                 _binVariance += spectrumAt[i];
                 _binSlopeVariance += spectrumAt[i] * double(bin.k) * bin.k;
+                _binCurvatureVariance += spectrumAt[i] * std::pow(double(bin.k), 4);
                 const double chop2 = _params.choppiness * _params.choppiness;
                 if (bin.k > 0.0f) {
                     _binStretchVariance[0] += chop2 * spectrumAt[i] * std::pow(double(bin.kx), 4) / (double(bin.k) * bin.k);

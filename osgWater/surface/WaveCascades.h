@@ -111,6 +111,9 @@ public:
     double binVariance() const { return _binVariance; }
     //! The slopes' variance the bins hold, |grad h|^2 on average: sum of k^2 S(k) dk^2.
     double binSlopeVariance() const { return _binSlopeVariance; }
+    //! A bound on the variance of the curvature d2h/du2 along any horizontal unit u the bins hold:
+    //! sum of k^4 S(k) dk^2 (each bin's (k.u)^4 at most k^4).
+    double binCurvatureVariance() const { return _binCurvatureVariance; }
     //! The largest variance of the displacement's derivatives dDx/dx, dDy/dy the bins hold (0
     //! without choppiness): sum of choppiness^2 k_i^4 / k^2 S(k) dk^2 for the larger of x and y.
     double binStretchVariance() const { return std::max(_binStretchVariance[0], _binStretchVariance[1]); }
@@ -142,7 +145,7 @@ private:
     std::vector<CascadeBand> _bands;
     std::vector<Cascade> _cascades;
     double _time;
-    double _binVariance, _binSlopeVariance, _binStretchVariance[2], _maxPhaseSpeed;
+    double _binVariance, _binSlopeVariance, _binCurvatureVariance, _binStretchVariance[2], _maxPhaseSpeed;
     struct Plans;
     std::unique_ptr<Plans> _plans;
 };
