@@ -11,10 +11,13 @@
 #include "ReferenceRenderer.h"
 #include "ImageCompare.h"
 #include "SceneShading.h"
+#include "../apps/common/SceneWater.h"
+#include "Views.h"
 #include "optics/Optics.h"
 #include "frame/PassMath.h"
 #include "frame/SceneLighting.h"
 #include <osgWater/WaterNode>
+#include <osgDB/ReadFile>
 #include <nlohmann/json.hpp>
 #include <glm/geometric.hpp>
 #include <algorithm>
@@ -644,6 +647,27 @@ TEST(Osgwaterbench, ARunOfTheSameBuildTakesWhatTheLastFinishedAndWritesTheSameTa
     // another build measures everything afresh
     const std::string other = quickRun(out, "build-b");
     EXPECT_EQ(other.find("kept from an earlier run"), std::string::npos) << other;
+}
+
+// The lake's two views with the eye on the water stand a micrometre above and below the scene's
+// own waves at their time: views that stood on an earlier wave model's surface drift with it.
+TEST(Osgwaterbench, TheLakesEyesOnTheWaterStandAMicrometreFromItsWaves)
+{
+    std::vector<bench::View> views;
+    std::string error;
+    ASSERT_TRUE(bench::readViews(OSGWATER_LAKE_VIEWS, views, error)) << error;
+    osg::ref_ptr<osg::Node> root = osgDB::readNodeFile(OSGWATER_LAKE_SCENE);
+    ASSERT_TRUE(root.valid());
+    osg::ref_ptr<osgWater::WaterNode> water = osgWaterApps::findOrAddWater(root, OSGWATER_LAKE_SCENE);
+    int checked = 0;
+    for (const bench::View& v : views)
+        for (double side : { 1.0, -1.0 })
+            if (v.name.find(side > 0 ? "1 µm above" : "1 µm below") != std::string::npos) {
+                const double over = v.eye.z() - water->getSurface()->height(v.eye.x(), v.eye.y(), v.t);
+                EXPECT_NEAR(over, side * 1e-6, 1e-8) << v.name; // its last written digit
+                ++checked;
+            }
+    EXPECT_EQ(checked, 2);
 }
 
 TEST(Osgwaterbench, MissingSceneFileIsAClearErrorAndNonZeroExit)
