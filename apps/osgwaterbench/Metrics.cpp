@@ -35,6 +35,21 @@ bool texel(const osg::Matrixd& mvp, const osg::Vec4d& p, int size, osg::Vec2d& o
     return std::isfinite(out.x()) && std::isfinite(out.y());
 }
 
+// How many reflection texels the pass's camera, at the mirrored eye, spreads a radian over around
+// the sight `d` (unit, from the mirrored eye): the larger of two perpendicular turns
+double texelsPerRadian(const Estimate& e, const osg::Vec3d& mirroredEye, const glm::dvec3& d)
+{
+    const glm::dvec3 a = std::fabs(d.z) < 0.9 ? glm::dvec3(0.0, 0.0, 1.0) : glm::dvec3(1.0, 0.0, 0.0);
+    const glm::dvec3 u = glm::normalize(glm::cross(d, a)), v = glm::cross(d, u);
+    const double turn = 1e-3;
+    auto at = [&](const glm::dvec3& s, osg::Vec2d& out) {
+        return texel(e.reflectionMVP, osg::Vec4d(mirroredEye + osg::Vec3d(s.x, s.y, s.z), 1.0), e.reflectionSize, out);
+    };
+    osg::Vec2d c, p, q;
+    if (!at(d, c) || !at(glm::normalize(d + turn * u), p) || !at(glm::normalize(d + turn * v), q)) return 1e30;
+    return std::max((p - c).length(), (q - c).length()) / turn;
+}
+
 }
 
 size_t countNonFinite(const osg::Image* img)
@@ -165,8 +180,18 @@ ViewErrors measureView(const ReferenceImage& ref, const Estimate& e, const RayCa
                     // shown: in the pass's view and on its texture
                     const bool onTexture = exact.x() >= 0.0 && exact.y() >= 0.0 && exact.x() <= e.reflectionSize &&
                                            exact.y() <= e.reflectionSize;
-                    if ((r.flags & PixelRef::REFLECTION_SHOWN) && onTexture) v.reflectionShownTexels.push_back(texels);
-                    else ++v.reflectionNotShown; // hidden, under the level, or off the texture
+                    if ((r.flags & PixelRef::REFLECTION_SHOWN) && onTexture) {
+                        v.reflectionShownTexels.push_back(texels);
+                        // the fan of the pixel's own mirror rays, in the pass's texels at its sight
+                        const osg::Vec3d mirrored(e.eye.x(), e.eye.y(), 2.0 * e.level - e.eye.z());
+                        const glm::dvec3 sight = (r.flags & PixelRef::REFLECTED_HIT)
+                                                     ? glm::normalize(glm::dvec3(r.Y) - glm::dvec3(mirrored.x(), mirrored.y(), mirrored.z()))
+                                                     : glm::normalize(glm::dvec3(r.Y));
+                        const float fan = float(std::min(r.mirrorSpread * texelsPerRadian(e, mirrored, sight), 1e9));
+                        v.reflectionFanTexels.push_back(fan);
+                        v.reflectionBeyondFanTexels.push_back(std::max(0.0f, texels - fan));
+                    } else
+                        ++v.reflectionNotShown; // hidden, under the level, or off the texture
                 }
             }
             if (!e.bottom.valid()) continue;

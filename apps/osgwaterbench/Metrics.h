@@ -60,6 +60,10 @@ struct ViewErrors {
     std::vector<float> reflectionTexels; //!< reflection lookup vs the mirror ray's hit, reflection texels
     std::vector<float> reflectionShownTexels; //!< the same where the reflection pass has the hit in view
     size_t reflectionNotShown = 0;       //!< pixels measured whose hit the reflection pass cannot show
+    //! Per shown pixel, the fan of its own rays' mirror rays in texels (PixelRef::mirrorSpread), and
+    //! how far its lookup lies beyond that fan: max(0, error - fan). Over waves shorter than a pixel
+    //! the mirror rays fan out, and no single lookup is nearer all of them than the fan is wide.
+    std::vector<float> reflectionFanTexels, reflectionBeyondFanTexels;
     std::vector<float> fresnel;          //!< |F - exact|
     size_t waterPixels = 0;              //!< reference: pixels whose eye ray meets the water first
     size_t misses = 0;                   //!< reference refracted ray hits, the renderer found nothing

@@ -76,6 +76,33 @@ PixelTrace Reference::trace(const glm::dvec3& eye, const glm::dvec3& dir) const
     return p;
 }
 
+bool Reference::mirrorSight(const glm::dvec3& eye, const glm::dvec3& dir, glm::dvec3& sight) const
+{
+    const Hit w = _water.intersect(eye, dir);
+    if (!w.hit) return false;
+    const Hit s = _scene.intersect(eye, dir, 0.0, w.t);
+    if (s.hit && s.t < w.t) return false;
+    glm::dvec3 N = normalAt(w);
+    if (glm::dot(N, dir) > 0.0) N = -N;
+    const glm::dvec3 Rr = glm::reflect(dir, N);
+    const Hit m = _scene.intersect(w.point, Rr, 1e-6 * (1.0 + w.t));
+    const double level = _surface.getLevel();
+    sight = m.hit ? glm::normalize(m.point - glm::dvec3(eye.x, eye.y, 2.0 * level - eye.z)) : Rr;
+    return true;
+}
+
+double mirrorSpread(const Reference& ref, const glm::dvec3& eye, const glm::dvec3 quarterDirs[4])
+{
+    glm::dvec3 sight[4];
+    for (int i = 0; i < 4; ++i)
+        if (!ref.mirrorSight(eye, quarterDirs[i], sight[i])) return 3.141592653589793;
+    double widest = 0.0;
+    for (int i = 0; i < 4; ++i)
+        for (int j = i + 1; j < 4; ++j)
+            widest = std::max(widest, std::acos(std::min(std::max(glm::dot(sight[i], sight[j]), -1.0), 1.0)));
+    return widest;
+}
+
 bool Reference::mirrorShows(const glm::dvec3& eye, const PixelTrace& p) const
 {
     const double level = _surface.getLevel(), side = p.below ? -1.0 : 1.0;
@@ -141,6 +168,18 @@ ReferenceImage traceView(const Reference& ref, const osg::Matrixd& viewMatrix, c
     forEachPixelRay(viewMatrix, projection, width, height, [&](int x, int y, const glm::dvec3& eye, const glm::dvec3& dir) {
         full[size_t(y) * width + x] = ref.trace(eye, dir);
     });
+    // the pixels' own rays through their quarters, for the fan of their mirror rays
+    std::vector<glm::dvec3> quarters(size_t(width) * height * 4);
+    const glm::dvec2 offsets[4] = { { 0.25, 0.25 }, { 0.75, 0.25 }, { 0.25, 0.75 }, { 0.75, 0.75 } };
+    for (int q = 0; q < 4; ++q)
+        forEachPixelRay(viewMatrix, projection, width, height, [&](int x, int y, const glm::dvec3&, const glm::dvec3& dir) {
+            quarters[(size_t(y) * width + x) * 4 + q] = dir;
+        }, offsets[q]);
+    std::vector<float> spread(size_t(width) * height, 0.0f);
+    forEachPixelRay(viewMatrix, projection, width, height, [&](int x, int y, const glm::dvec3& eye, const glm::dvec3&) {
+        const size_t i = size_t(y) * width + x;
+        if (full[i].water) spread[i] = float(mirrorSpread(ref, eye, &quarters[i * 4]));
+    });
 
     auto hitOk = [&](int x, int y, const Hit& h0) {
         if (x < 0 || y < 0 || x >= width || y >= height) return false;
@@ -160,6 +199,7 @@ ReferenceImage traceView(const Reference& ref, const osg::Matrixd& viewMatrix, c
             r.Y = glm::vec3(p.reflected.hit ? p.reflected.point : p.Rr);
             if (p.reflected.hit) r.flags |= PixelRef::REFLECTED_HIT;
             if (p.reflectionShown) r.flags |= PixelRef::REFLECTION_SHOWN;
+            r.mirrorSpread = spread[size_t(y) * width + x];
             if (!p.refracted.hit) continue;
             r.flags |= PixelRef::REFRACTED_HIT;
             r.X = glm::vec3(p.refracted.point);

@@ -38,6 +38,14 @@ struct PixelTrace {
     bool reflectionShown = false; //!< the reflection pass can show the mirror ray's hit (Reference::mirrorShows)
 };
 
+class Reference;
+
+//! The largest angle (radians) between the mirror sights (Reference::mirrorSight) of a pixel's own
+//! rays, at the centres of its four quarters; pi where some of them miss the water. Over waves
+//! shorter than the pixel the mirror rays fan out, and no single lookup can be nearer all of them
+//! than that fan is wide.
+double mirrorSpread(const Reference& ref, const glm::dvec3& eye, const glm::dvec3 quarterDirs[4]);
+
 class Reference
 {
 public:
@@ -52,6 +60,11 @@ public:
     const Media& media() const { return _media; }
     //! The water's unit normal at a hit of water(), facing up (over the waves the analytic one).
     glm::dvec3 normalAt(const Hit& h) const;
+    //! Where the reflection pass shows the mirror ray of the ray eye + s dir: the unit direction from
+    //! the eye mirrored in the level to the mirror ray's hit, or the ray's own direction where it
+    //! meets nothing (the pass's camera sits at the mirrored eye). False where the ray does not meet
+    //! the water first.
+    bool mirrorSight(const glm::dvec3& eye, const glm::dvec3& dir, glm::dvec3& sight) const;
 
 private:
     //! Whether the reflection pass, the eye mirrored in the level drawing the eye's side of it, has
@@ -74,6 +87,7 @@ struct PixelRef {
     glm::vec3 U{ 0.0f }, X{ 0.0f }, Y{ 0.0f }; //!< Y: the mirror ray's hit, or its direction on a miss
     float fresnel = 0.0f;
     glm::mat2x3 pixelsPerMetre{ 0.0f };       //!< least-squares inverse of dX/d(pixel): metres -> pixels
+    float mirrorSpread = 0.0f;                //!< radians: the fan of the pixel's own mirror rays (mirrorSpread)
 };
 
 struct ReferenceImage {

@@ -50,6 +50,8 @@ nlohmann::json toJson(const Record& r)
     addQuantiles(j, "reflection_texels", r.reflectionTexels);
     addQuantiles(j, "reflection_shown_texels", r.reflectionShownTexels);
     j["reflection_not_shown"] = r.reflectionNotShown;
+    addQuantiles(j, "reflection_fan_texels", r.reflectionFanTexels);
+    addQuantiles(j, "reflection_beyond_fan_texels", r.reflectionBeyondFanTexels);
     addQuantiles(j, "fresnel_error", r.fresnelError);
     addQuantiles(j, "drawn_surface_px", r.drawnSurfacePx);
     addQuantiles(j, "shaded_point_cm", r.shadedPointCm);
@@ -313,6 +315,9 @@ bool writeDocs(const std::string& dir, const RunInfo& info, const std::vector<Re
         md << "| the same where the reflection pass shows the hit (" << pct(1.0 - def->reflectionNotShownShare)
            << " of the pixels) | " << fmt(def->reflectionShownTexels.p99, 1, " texels") << " | "
            << status(def->reflectionShownTexels.p99, def->reflectionShownTexels.p99 <= 4.0) << " |\n";
+        md << "| the same beyond the fan of each pixel's own mirror rays (median fan "
+           << fmt(def->reflectionFanTexels.median, 1, " texels") << ") | " << fmt(def->reflectionBeyondFanTexels.p99, 1, " texels")
+           << " | " << status(def->reflectionBeyondFanTexels.p99, def->reflectionBeyondFanTexels.p99 <= 4.0) << " |\n";
         md << "| default coverage mismatch ≤ 0.5% on every view (worst: " << def->worstCoverageView << ") | "
            << pct(def->worstCoverageShare) << " | " << status(def->worstCoverageShare, def->worstCoverageShare <= 0.005)
            << " |\n";
@@ -408,7 +413,10 @@ bool writeDocs(const std::string& dir, const RunInfo& info, const std::vector<Re
        << "texels; \"shown\": only the pixels whose hit the reflection pass has in view (seen from the "
        << "mirrored eye, on the eye's side of the level, and on the texture: not behind a shore, not a ray the "
        << "waves send back under the level), which no lookup in that texture can find otherwise; \"not shown\": the share "
-       << "of the others. Coverage: pixels where one of the reference and the render sees water and the other does "
+       << "of the others. Fan: per shown pixel, how wide (texels) the mirror rays of its own four rays (through the "
+       << "centres of its quarters) fan over the texture; over waves shorter than a pixel they fan out, and no single "
+       << "lookup is nearer all of them than the fan is wide. Beyond fan: max(0, error - fan), the error no lookup "
+       << "the pixel's own rays could justify. Coverage: pixels where one of the reference and the render sees water and the other does "
        << "not, over the reference's water pixels. Surface: the drawn mesh against the analytic surface, per "
        << "pixel of the render's water the rasterised point and the exact surface point under it (same x, y): "
        << "the angle between them at the eye, in pixels of the view's focal length. Shaded: the share of the "
@@ -420,9 +428,9 @@ bool writeDocs(const std::string& dir, const RunInfo& info, const std::vector<Re
        << "reference's water pixels, the luma SSIM (11 × 11 Gaussian window, σ 1.5) and the mean CIEDE2000, "
        << "each the mean over the views, and the worst view's.\n\n"
        << "| technique | ratio | frame ms | image SSIM | worst | image ΔE00 | worst | refr. px median | p95 | p99 | max | > 2 px | refr. m median "
-          "| refl. texels median | p99 | shown p99 | not shown | Fresnel err. median | max | caustics RMSE "
+          "| refl. texels median | p99 | shown p99 | not shown | fan median | beyond fan p99 | Fresnel err. median | max | caustics RMSE "
           "| coverage | surface px median | p99 | shaded > 2 cm | NaN px |\n"
-       << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+       << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
     for (const Summary& s : summaries)
         md << "| " << s.technique << " | " << fmt(s.ratioInView, 2, "×") << " | " << fmt(s.frameMs, 1) << " | "
            << fmt(s.imageSsim, 3) << " | " << fmt(s.worstImageSsim, 3) << " | " << fmt(s.imageDeltaE, 2) << " | "
@@ -430,7 +438,8 @@ bool writeDocs(const std::string& dir, const RunInfo& info, const std::vector<Re
            << " | " << fmt(s.refractionPx.max, 1) << " | " << pct(s.refractionPx.over2) << " | "
            << fmt(s.refractionM.median, 4) << " | " << fmt(s.reflectionTexels.median, 2) << " | "
            << fmt(s.reflectionTexels.p99, 1) << " | " << fmt(s.reflectionShownTexels.p99, 1) << " | "
-           << pct(s.reflectionNotShownShare) << " | " << fmt(s.fresnel.median, 4) << " | " << fmt(s.fresnel.max, 3)
+           << pct(s.reflectionNotShownShare) << " | " << fmt(s.reflectionFanTexels.median, 1) << " | "
+           << fmt(s.reflectionBeyondFanTexels.p99, 1) << " | " << fmt(s.fresnel.median, 4) << " | " << fmt(s.fresnel.max, 3)
            << " | " << pct(s.causticsRmse) << (std::isfinite(s.causticsNoise) ? " (" + pct(s.causticsNoise) + ")" : "")
            << " | " << pct(s.coverageMismatchShare) << " | " << fmt(s.drawnSurfacePx.median, 3) << " | "
            << fmt(s.drawnSurfacePx.p99, 2) << " | " << pct(s.shadedPointCm.over2) << " | " << s.nanPixels << " |\n";
@@ -453,9 +462,9 @@ bool writeDocs(const std::string& dir, const RunInfo& info, const std::vector<Re
           "its sampling's, not the render's.\n\n"
        << "| view | eye | water px | frame ms | plain ms | ratio | image SSIM | ΔE00 mean | ΔE00 p95 | reference noise ΔE00 "
           "| image target | refr. px median | p99 | max | refr. m median "
-          "| refl. texels median | p99 | shown p99 | not shown | Fresnel err. median | caustics RMSE | coverage "
+          "| refl. texels median | p99 | shown p99 | not shown | fan median | beyond fan p99 | Fresnel err. median | caustics RMSE | coverage "
           "| surface px median | p99 | shaded > 2 cm | NaN px |\n"
-       << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+       << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
     for (const Record& r : records) {
         if (r.technique != "default") continue;
         md << "| " << r.view << " | " << (r.eyeBelow ? "under water" : "above") << " | " << r.waterPixels << " | "
@@ -469,7 +478,7 @@ bool writeDocs(const std::string& dir, const RunInfo& info, const std::vector<Re
            << fmt(r.reflectionTexels.p99, 1) << " | " << fmt(r.reflectionShownTexels.p99, 1) << " | "
            << pct(r.reflectionTexels.n ? double(r.reflectionNotShown) / double(r.reflectionTexels.n)
                                        : std::numeric_limits<double>::quiet_NaN())
-           << " | " << fmt(r.fresnelError.median, 4) << " | " << pct(r.causticsErrors.relativeRmse) << " | "
+           << " | " << fmt(r.reflectionFanTexels.median, 1) << " | " << fmt(r.reflectionBeyondFanTexels.p99, 1) << " | " << fmt(r.fresnelError.median, 4) << " | " << pct(r.causticsErrors.relativeRmse) << " | "
            << pct(r.waterPixels ? double(r.coverageMismatch) / double(r.waterPixels) : std::numeric_limits<double>::quiet_NaN())
            << " | " << fmt(r.drawnSurfacePx.median, 3) << " | " << fmt(r.drawnSurfacePx.p99, 2) << " | "
            << pct(r.shadedPointCm.over2) << " | " << r.nanPixels

@@ -18,6 +18,7 @@ struct Record {
     size_t waterPixels = 0, misses = 0, tirMismatch = 0, coverageMismatch = 0, nanPixels = 0;
     size_t reflectionNotShown = 0; //!< measured pixels whose mirror hit the reflection pass cannot show
     Quantiles refractionPx, refractionM, reflectionTexels, reflectionShownTexels, fresnelError;
+    Quantiles reflectionFanTexels, reflectionBeyondFanTexels; //!< the shown pixels' (ViewErrors)
     Quantiles drawnSurfacePx; //!< the drawn mesh against the analytic surface, screen pixels
     Quantiles shadedPointCm;  //!< the point each pixel shades against its ray's exact crossing, cm (over2: > 2 cm)
     size_t refractionCauses[CAUSE_COUNT] = {}; //!< the refraction's pixels over 2 px, by cause
@@ -33,6 +34,7 @@ struct Summary {
     double frameMs = 0.0;       //!< median over the same views
     Quantiles refractionPx, refractionM, reflectionTexels, fresnel; //!< every pixel of every view
     Quantiles reflectionShownTexels;   //!< the pixels whose mirror hit the reflection pass shows
+    Quantiles reflectionFanTexels, reflectionBeyondFanTexels; //!< the shown pixels' (ViewErrors)
     Quantiles drawnSurfacePx;          //!< the drawn mesh against the analytic surface, every pixel of every view
     Quantiles shadedPointCm;           //!< the shaded point against the exact crossing, every pixel of every view
     double worstCoverageShare = std::numeric_limits<double>::quiet_NaN(); //!< the worst view's coverage mismatch

@@ -62,6 +62,8 @@ json toJson(const Record& r)
                { "refractionPx", toJson(r.refractionPx) }, { "refractionM", toJson(r.refractionM) },
                { "reflectionTexels", toJson(r.reflectionTexels) },
                { "reflectionShownTexels", toJson(r.reflectionShownTexels) },
+               { "reflectionFanTexels", toJson(r.reflectionFanTexels) },
+               { "reflectionBeyondFanTexels", toJson(r.reflectionBeyondFanTexels) },
                { "fresnelError", toJson(r.fresnelError) }, { "drawnSurfacePx", toJson(r.drawnSurfacePx) },
                { "shadedPointCm", toJson(r.shadedPointCm) } };
     j["refractionCauses"] = json(std::vector<size_t>(std::begin(r.refractionCauses), std::end(r.refractionCauses)));
@@ -106,6 +108,8 @@ Record recordFrom(const json& j)
     r.refractionM = quantilesFrom(j.at("refractionM"));
     r.reflectionTexels = quantilesFrom(j.at("reflectionTexels"));
     r.reflectionShownTexels = quantilesFrom(j.at("reflectionShownTexels"));
+    r.reflectionFanTexels = quantilesFrom(j.at("reflectionFanTexels"));
+    r.reflectionBeyondFanTexels = quantilesFrom(j.at("reflectionBeyondFanTexels"));
     r.fresnelError = quantilesFrom(j.at("fresnelError"));
     r.drawnSurfacePx = quantilesFrom(j.at("drawnSurfacePx"));
     r.shadedPointCm = quantilesFrom(j.at("shadedPointCm"));
@@ -135,6 +139,8 @@ json toJson(const Summary& s)
              { "refractionPx", toJson(s.refractionPx) }, { "refractionM", toJson(s.refractionM) },
              { "reflectionTexels", toJson(s.reflectionTexels) }, { "fresnel", toJson(s.fresnel) },
              { "reflectionShownTexels", toJson(s.reflectionShownTexels) },
+             { "reflectionFanTexels", toJson(s.reflectionFanTexels) },
+             { "reflectionBeyondFanTexels", toJson(s.reflectionBeyondFanTexels) },
              { "drawnSurfacePx", toJson(s.drawnSurfacePx) }, { "shadedPointCm", toJson(s.shadedPointCm) },
              { "worstCoverageShare", number(s.worstCoverageShare) }, { "worstCoverageView", s.worstCoverageView },
              { "reflectionNotShownShare", number(s.reflectionNotShownShare) },
@@ -157,6 +163,8 @@ Summary summaryFrom(const json& j)
     s.reflectionTexels = quantilesFrom(j.at("reflectionTexels"));
     s.fresnel = quantilesFrom(j.at("fresnel"));
     s.reflectionShownTexels = quantilesFrom(j.at("reflectionShownTexels"));
+    s.reflectionFanTexels = quantilesFrom(j.at("reflectionFanTexels"));
+    s.reflectionBeyondFanTexels = quantilesFrom(j.at("reflectionBeyondFanTexels"));
     s.drawnSurfacePx = quantilesFrom(j.at("drawnSurfacePx"));
     s.shadedPointCm = quantilesFrom(j.at("shadedPointCm"));
     s.worstCoverageShare = number(j.at("worstCoverageShare"));
