@@ -132,7 +132,7 @@ osg::ref_ptr<osg::Image> Harness::readTexture(osg::Texture2D* texture, int level
 std::ostream& operator<<(std::ostream& os, const GLCounts& c)
 {
     return os << c.textures << " textures, " << c.framebuffers << " framebuffers, " << c.renderbuffers
-              << " renderbuffers, " << c.buffers << " buffers, " << c.programs << " programs";
+              << " renderbuffers, " << c.buffers << " buffers, " << c.programs << " programs, " << c.queries << " queries";
 }
 
 GLCounts countGLObjects(osg::GraphicsContext* gc, GLuint& highest)
@@ -141,8 +141,10 @@ GLCounts countGLObjects(osg::GraphicsContext* gc, GLuint& highest)
     osg::flushAllDeletedGLObjects(gc->getState()->getContextID());
     // GL 2/3 entry points OSG does not wrap, loaded through OSG's own loader
     typedef GLboolean(GL_APIENTRY * IsObject)(GLuint);
-    static IsObject isFramebuffer = nullptr, isRenderbuffer = nullptr, isBuffer = nullptr, isProgram = nullptr;
+    static IsObject isFramebuffer = nullptr, isRenderbuffer = nullptr, isBuffer = nullptr, isProgram = nullptr,
+                    isQuery = nullptr;
     if (!isFramebuffer) {
+        osg::setGLExtensionFuncPtr(isQuery, "glIsQuery", "glIsQueryARB");
         osg::setGLExtensionFuncPtr(isFramebuffer, "glIsFramebuffer", "glIsFramebufferEXT");
         osg::setGLExtensionFuncPtr(isRenderbuffer, "glIsRenderbuffer", "glIsRenderbufferEXT");
         osg::setGLExtensionFuncPtr(isBuffer, "glIsBuffer", "glIsBufferARB");
@@ -151,13 +153,14 @@ GLCounts countGLObjects(osg::GraphicsContext* gc, GLuint& highest)
     GLCounts c;
     for (GLuint i = 1; i < kNames; ++i) {
         const bool t = glIsTexture(i), f = isFramebuffer && isFramebuffer(i), r = isRenderbuffer && isRenderbuffer(i),
-                   b = isBuffer && isBuffer(i), p = isProgram && isProgram(i);
+                   b = isBuffer && isBuffer(i), p = isProgram && isProgram(i), q = isQuery && isQuery(i);
         c.textures += t;
         c.framebuffers += f;
         c.renderbuffers += r;
         c.buffers += b;
         c.programs += p;
-        if (t || f || r || b || p) highest = std::max(highest, i);
+        c.queries += q;
+        if (t || f || r || b || p || q) highest = std::max(highest, i);
     }
     return c;
 }

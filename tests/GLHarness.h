@@ -83,11 +83,11 @@ osg::ref_ptr<osg::Image> readTexture(osg::GraphicsContext* gc, osg::Texture2D* t
 // --- GL objects ----------------------------------------------------------------------------------
 //! Live GL objects of one context, counted by name (glIs*).
 struct GLCounts {
-    int textures = 0, framebuffers = 0, renderbuffers = 0, buffers = 0, programs = 0;
+    int textures = 0, framebuffers = 0, renderbuffers = 0, buffers = 0, programs = 0, queries = 0;
     bool operator==(const GLCounts& o) const
     {
         return textures == o.textures && framebuffers == o.framebuffers && renderbuffers == o.renderbuffers &&
-               buffers == o.buffers && programs == o.programs;
+               buffers == o.buffers && programs == o.programs && queries == o.queries;
     }
 };
 std::ostream& operator<<(std::ostream& os, const GLCounts& c);

@@ -1,5 +1,5 @@
 // Leaks: WaterNodes made and dropped, views added and removed, and thousands of frames leave the
-// number of GL textures, framebuffers, renderbuffers, buffers and programs where it was. (Memory leaks are
+// number of GL textures, framebuffers, renderbuffers, buffers, programs and queries where it was. (Memory leaks are
 // LeakSanitizer's part: this suite runs under scripts/sanitize.sh like every other.)
 #include "GLHarness.h"
 #include <osgWater/WaterNode>

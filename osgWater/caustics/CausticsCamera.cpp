@@ -403,4 +403,5 @@ void CausticsCamera::releaseGLObjects(osg::State* state) const
     releasePassGLObjects(_photons.get(), state);
     _gather->releaseGLObjects(state); // its point clouds and CPU gather are its children
     releasePassGLObjects(_gather.get(), state);
+    for (const PassMeter* m : { _meter.get(), _depthMeter.get(), _shadeMeter.get() }) m->releaseGLObjects(state);
 }

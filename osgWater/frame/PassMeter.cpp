@@ -3,6 +3,7 @@
 #include <osg/RenderInfo>
 #include <osg/State>
 #include <osg/Notify>
+#include "frame/QueryNames.h"
 #include <algorithm>
 
 using namespace osgWater;
@@ -73,6 +74,16 @@ PassMeasure PassMeasure::operator+(const PassMeasure& o) const
 }
 
 PassMeter::PassMeter() : _ms(-1.0), _fragments(-1.0) {}
+
+PassMeter::~PassMeter()
+{
+    releaseGLObjects(nullptr);
+}
+
+void PassMeter::releaseGLObjects(osg::State* state) const
+{
+    releaseQueryNames(_queries, state);
+}
 
 void PassMeter::attach(osg::Drawable* drawable)
 {

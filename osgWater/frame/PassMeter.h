@@ -49,9 +49,13 @@ public:
 
     void begin(osg::RenderInfo& ri);
     void end(osg::RenderInfo& ri);
+    //! Hands the context's query names (every context's without a state) to OSG for deletion in
+    //! its next draw; the meter makes new ones when it next measures there.
+    void releaseGLObjects(osg::State* state) const;
 
 protected:
-    virtual ~PassMeter() {}
+    //! Hands every context's query names to OSG for deletion in that context's next draw.
+    virtual ~PassMeter();
     std::atomic<double> _ms, _fragments;
     std::atomic<bool> _enabled{ true };
     // per context (the caustics' meter is drawn by every context that renders them, each in its
@@ -64,7 +68,7 @@ protected:
         bool counting = false; // ... and the fragments' among them
         bool failed = false;   // no timer queries
     };
-    osg::buffered_object<Query> _queries;
+    mutable osg::buffered_object<Query> _queries;
     //! The results of the queries `q` ended, where they are in (else `q` stays pending).
     void readLastFrame(osg::GLExtensions& ext, Query& q);
 };

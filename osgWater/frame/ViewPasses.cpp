@@ -132,6 +132,7 @@ void ViewPasses::releaseGLObjects(osg::State* state) const
     _reflection->releaseGLObjects(state);
     _refraction->releaseGLObjects(state);
     _waterInputs->releaseGLObjects(state);
+    for (const PassMeter* m : { _reflectionMeter.get(), _refractionMeter.get() }) m->releaseGLObjects(state);
     if (_glow.valid()) _glow->releaseGLObjects(state);
 }
 

@@ -178,6 +178,7 @@ void WaterNodeImpl::releaseGLObjects(osg::State* state) const
 {
     _node.osg::Group::releaseGLObjects(state);
     _surface->releaseGLObjects(state);
+    _surfaceMeter->releaseGLObjects(state);
     _states.releaseGLObjects(state);
     _underwater->releaseGLObjects(state);
     _views.releaseGLObjects(state);

@@ -2,6 +2,7 @@
 #include "frame/ScreenTriangle.h"
 #include <osg/GLExtensions>
 #include <osg/Notify>
+#include "frame/QueryNames.h"
 #include <osg/State>
 #include <algorithm>
 #include <vector>
@@ -114,10 +115,12 @@ void GlowBands::endConditional(osg::State& state)
     _contexts[state.getContextID()].endConditionalRender();
 }
 
+GlowBands::~GlowBands()
+{
+    releaseGLObjects(nullptr);
+}
+
 void GlowBands::releaseGLObjects(osg::State* state) const
 {
-    // the query names are the context's: forgotten with it, made again on its next draw
-    if (state) _contexts[state->getContextID()] = PerContext();
-    else
-        for (unsigned int i = 0; i < _contexts.size(); ++i) _contexts[i] = PerContext();
+    releaseQueryNames(_contexts, state);
 }

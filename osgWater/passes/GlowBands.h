@@ -45,7 +45,7 @@ public:
     void releaseGLObjects(osg::State* state) const;
 
 protected:
-    virtual ~GlowBands() {}
+    virtual ~GlowBands();
     struct PerContext {
         unsigned int ids[BANDS] = {};
         bool counted[BANDS] = {};

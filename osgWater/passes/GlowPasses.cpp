@@ -347,4 +347,5 @@ void GlowPasses::releaseGLObjects(osg::State* state) const
     for (const osg::Camera* c : { _highlight.get(), _blur[0].get(), _blur[1].get() }) releasePassGLObjects(c, state);
     _composite->releaseGLObjects(state);
     _bands->releaseGLObjects(state);
+    for (const PassMeter* m : { _highlightMeter.get(), _blurMeter.get(), _compositeMeter.get() }) m->releaseGLObjects(state);
 }

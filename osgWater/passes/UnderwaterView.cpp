@@ -84,4 +84,5 @@ void UnderwaterView::releaseGLObjects(osg::State* state) const
 {
     _cap->releaseGLObjects(state);
     _backdrop->releaseGLObjects(state);
+    for (const PassMeter* m : { _capMeter.get(), _backdropMeter.get() }) m->releaseGLObjects(state);
 }
