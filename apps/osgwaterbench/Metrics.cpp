@@ -141,6 +141,8 @@ ViewErrors measureView(const ReferenceImage& ref, const Estimate& e, const RayCa
     for (const osg::Image* img : { e.color.get(), e.bottom.get(), e.reflection.get(), e.fresnel.get(), e.work.get() })
         if (img) v.nanPixels += countNonFinite(img);
     v.waterPixels = ref.waterPixels;
+    // the reflection pass's camera: the eye mirrored in the level
+    const osg::Vec3d mirrored(e.eye.x(), e.eye.y(), 2.0 * e.level - e.eye.z());
     for (int y = 0; y < ref.height; ++y)
         for (int x = 0; x < ref.width; ++x) {
             const PixelRef& r = ref.at(x, y);
@@ -183,7 +185,6 @@ ViewErrors measureView(const ReferenceImage& ref, const Estimate& e, const RayCa
                     if ((r.flags & PixelRef::REFLECTION_SHOWN) && onTexture) {
                         v.reflectionShownTexels.push_back(texels);
                         // the fan of the pixel's own mirror rays, in the pass's texels at its sight
-                        const osg::Vec3d mirrored(e.eye.x(), e.eye.y(), 2.0 * e.level - e.eye.z());
                         const glm::dvec3 sight = (r.flags & PixelRef::REFLECTED_HIT)
                                                      ? glm::normalize(glm::dvec3(r.Y) - glm::dvec3(mirrored.x(), mirrored.y(), mirrored.z()))
                                                      : glm::normalize(glm::dvec3(r.Y));

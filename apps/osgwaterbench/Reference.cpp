@@ -49,13 +49,24 @@ glm::dvec3 Reference::normalAt(const Hit& h) const
     return h.normal.z < 0.0 ? -h.normal : h.normal;
 }
 
+Hit Reference::waterFirst(const glm::dvec3& eye, const glm::dvec3& dir) const
+{
+    const Hit w = _water.intersect(eye, dir);
+    if (!w.hit) return w;
+    const Hit s = _scene.intersect(eye, dir, 0.0, w.t);
+    return s.hit && s.t < w.t ? Hit() : w; // something in front of the water
+}
+
+glm::dvec3 Reference::mirroredEye(const glm::dvec3& eye) const
+{
+    return glm::dvec3(eye.x, eye.y, 2.0 * _surface.getLevel() - eye.z);
+}
+
 PixelTrace Reference::trace(const glm::dvec3& eye, const glm::dvec3& dir) const
 {
     PixelTrace p;
-    const Hit w = _water.intersect(eye, dir);
+    const Hit w = waterFirst(eye, dir);
     if (!w.hit) return p;
-    const Hit s = _scene.intersect(eye, dir, 0.0, w.t);
-    if (s.hit && s.t < w.t) return p; // something in front of the water
     p.water = true;
     p.below = eyeBelow(eye);
     p.U = w.point;
@@ -78,16 +89,11 @@ PixelTrace Reference::trace(const glm::dvec3& eye, const glm::dvec3& dir) const
 
 bool Reference::mirrorSight(const glm::dvec3& eye, const glm::dvec3& dir, glm::dvec3& sight) const
 {
-    const Hit w = _water.intersect(eye, dir);
+    const Hit w = waterFirst(eye, dir);
     if (!w.hit) return false;
-    const Hit s = _scene.intersect(eye, dir, 0.0, w.t);
-    if (s.hit && s.t < w.t) return false;
-    glm::dvec3 N = normalAt(w);
-    if (glm::dot(N, dir) > 0.0) N = -N;
-    const glm::dvec3 Rr = glm::reflect(dir, N);
+    const glm::dvec3 Rr = glm::reflect(dir, normalAt(w)); // either side of the normal: the same mirror
     const Hit m = _scene.intersect(w.point, Rr, 1e-6 * (1.0 + w.t));
-    const double level = _surface.getLevel();
-    sight = m.hit ? glm::normalize(m.point - glm::dvec3(eye.x, eye.y, 2.0 * level - eye.z)) : Rr;
+    sight = m.hit ? glm::normalize(m.point - mirroredEye(eye)) : Rr;
     return true;
 }
 
@@ -106,7 +112,7 @@ double mirrorSpread(const Reference& ref, const glm::dvec3& eye, const glm::dvec
 bool Reference::mirrorShows(const glm::dvec3& eye, const PixelTrace& p) const
 {
     const double level = _surface.getLevel(), side = p.below ? -1.0 : 1.0;
-    const glm::dvec3 mirrored(eye.x, eye.y, 2.0 * level - eye.z);
+    const glm::dvec3 mirrored = mirroredEye(eye);
     // the mirrored eye's line of sight to the hit (t = 1 at it), or along the ray to the sky
     const glm::dvec3 d = p.reflected.hit ? p.reflected.point - mirrored : p.Rr;
     if (p.reflected.hit && side * (p.reflected.point.z - level) < 0.0) return false;
@@ -137,19 +143,26 @@ bool pseudoInverse(const glm::dvec3& jx, const glm::dvec3& jy, glm::mat2x3& out)
 
 }
 
+ViewRays::ViewRays(const osg::Matrixd& viewMatrix, const osg::Matrixd& projection, int w, int h)
+    : eye(toGlm(osg::Matrixd::inverse(viewMatrix).getTrans())), _inverse(osg::Matrixd::inverse(viewMatrix * projection)),
+      _width(w), _height(h)
+{
+}
+
+glm::dvec3 ViewRays::through(double x, double y) const
+{
+    const double nx = x / _width * 2.0 - 1.0, ny = y / _height * 2.0 - 1.0;
+    return glm::normalize(toGlm(osg::Vec3d(nx, ny, 1.0) * _inverse) - toGlm(osg::Vec3d(nx, ny, -1.0) * _inverse));
+}
+
 void forEachPixelRay(const osg::Matrixd& viewMatrix, const osg::Matrixd& projection, int width, int height,
                      const std::function<void(int, int, const glm::dvec3&, const glm::dvec3&)>& pixel,
                      const glm::dvec2& offset)
 {
-    const osg::Matrixd inv = osg::Matrixd::inverse(viewMatrix * projection);
-    const glm::dvec3 eye = toGlm(osg::Matrixd::inverse(viewMatrix).getTrans());
+    const ViewRays rays(viewMatrix, projection, width, height);
     auto rows = [&](int y0, int y1) {
         for (int y = y0; y < y1; ++y)
-            for (int x = 0; x < width; ++x) {
-                const double nx = (x + offset.x) / width * 2.0 - 1.0, ny = (y + offset.y) / height * 2.0 - 1.0;
-                const glm::dvec3 dir = glm::normalize(toGlm(osg::Vec3d(nx, ny, 1.0) * inv) - toGlm(osg::Vec3d(nx, ny, -1.0) * inv));
-                pixel(x, y, eye, dir);
-            }
+            for (int x = 0; x < width; ++x) pixel(x, y, rays.eye, rays.through(x + offset.x, y + offset.y));
     };
     const int threads = std::max(1u, std::min(8u, std::thread::hardware_concurrency()));
     std::vector<std::thread> pool;
@@ -165,20 +178,16 @@ ReferenceImage traceView(const Reference& ref, const osg::Matrixd& viewMatrix, c
     img.height = height;
     img.pixels.resize(size_t(width) * height);
     std::vector<PixelTrace> full(size_t(width) * height);
-    forEachPixelRay(viewMatrix, projection, width, height, [&](int x, int y, const glm::dvec3& eye, const glm::dvec3& dir) {
-        full[size_t(y) * width + x] = ref.trace(eye, dir);
-    });
-    // the pixels' own rays through their quarters, for the fan of their mirror rays
-    std::vector<glm::dvec3> quarters(size_t(width) * height * 4);
-    const glm::dvec2 offsets[4] = { { 0.25, 0.25 }, { 0.75, 0.25 }, { 0.25, 0.75 }, { 0.75, 0.75 } };
-    for (int q = 0; q < 4; ++q)
-        forEachPixelRay(viewMatrix, projection, width, height, [&](int x, int y, const glm::dvec3&, const glm::dvec3& dir) {
-            quarters[(size_t(y) * width + x) * 4 + q] = dir;
-        }, offsets[q]);
     std::vector<float> spread(size_t(width) * height, 0.0f);
-    forEachPixelRay(viewMatrix, projection, width, height, [&](int x, int y, const glm::dvec3& eye, const glm::dvec3&) {
+    const ViewRays rays(viewMatrix, projection, width, height);
+    forEachPixelRay(viewMatrix, projection, width, height, [&](int x, int y, const glm::dvec3& eye, const glm::dvec3& dir) {
         const size_t i = size_t(y) * width + x;
-        if (full[i].water) spread[i] = float(mirrorSpread(ref, eye, &quarters[i * 4]));
+        full[i] = ref.trace(eye, dir);
+        if (!full[i].water) return;
+        // the pixel's own rays through its quarters, for the fan of their mirror rays
+        const glm::dvec3 quarters[4] = { rays.through(x + 0.25, y + 0.25), rays.through(x + 0.75, y + 0.25),
+                                         rays.through(x + 0.25, y + 0.75), rays.through(x + 0.75, y + 0.75) };
+        spread[i] = float(mirrorSpread(ref, eye, quarters));
     });
 
     auto hitOk = [&](int x, int y, const Hit& h0) {

@@ -67,6 +67,10 @@ public:
     bool mirrorSight(const glm::dvec3& eye, const glm::dvec3& dir, glm::dvec3& sight) const;
 
 private:
+    //! The eye ray's hit on the water where nothing in the scene lies before it (else no hit).
+    Hit waterFirst(const glm::dvec3& eye, const glm::dvec3& dir) const;
+    //! The eye mirrored in the level: where the reflection pass's camera sits.
+    glm::dvec3 mirroredEye(const glm::dvec3& eye) const;
     //! Whether the reflection pass, the eye mirrored in the level drawing the eye's side of it, has
     //! the mirror ray's hit in view: the hit (for a miss, the sky along the ray) lies on that side and
     //! is the first thing on the mirrored eye's line of sight there. Where it is not, no lookup in
@@ -95,6 +99,22 @@ struct ReferenceImage {
     std::vector<PixelRef> pixels;
     size_t waterPixels = 0;
     const PixelRef& at(int x, int y) const { return pixels[size_t(y) * width + x]; }
+};
+
+//! The unit rays of a width x height view (viewMatrix, projection: local frame -> clip) from its
+//! eye, local frame.
+class ViewRays
+{
+public:
+    ViewRays(const osg::Matrixd& viewMatrix, const osg::Matrixd& projection, int width, int height);
+    //! Through the view's point (x, y) in pixels from its lower left corner (pixel (i, j)'s centre:
+    //! i + 0.5, j + 0.5).
+    glm::dvec3 through(double x, double y) const;
+    const glm::dvec3 eye;
+
+private:
+    osg::Matrixd _inverse;
+    int _width, _height;
 };
 
 //! Calls `pixel(x, y, eye, dir)` for every pixel of a width x height view (row 0 at the bottom),
