@@ -71,7 +71,15 @@ float owFresnel(float cosE, float n1, float n2, float q)
 // in four nodes over a from -3 deviations to where the facets turn away: within 0.007 of the full
 // integral over both slopes (tests). At grazing under a breeze (0.029) F falls from 1 to about 0.45,
 // as Bruneton, Neyret and Holzschuch's mean Fresnel (2010); facing the water it hardly moves.
-float owFresnelOverSlopes(float cosE, float roughness, float n1, float n2, float q)
+// The same in one pass with where the reflected light comes from: (F, the mean slope towards the
+// eye of the seen facets weighted by the light each reflects, its deviation). Seen from the eye,
+// facets tilted towards it show more area and the ones tilted far away hide, so the seen facets
+// lean towards the eye and their mirror rays rise by twice the lean; but the most tilted reflect
+// least (their light meets them less grazing), so the light's mean lean is the F-weighted one. At
+// grazing under a breeze the reflection comes from sky a few tenths of a radian above the mean
+// normal's mirror ray, as every ray of the exact reference finds. A facet's ray sent back under
+// the level counts too (owShareSentUnder says how many there are).
+vec3 owFresnelAndLean(float cosE, float roughness, float n1, float n2, float q)
 {
     float s = sqrt(max(0.5 * roughness, 1e-12)); // the slopes' deviation along the plane
     float c = clamp(cosE, 0.0, 1.0);
@@ -80,15 +88,25 @@ float owFresnelOverSlopes(float cosE, float roughness, float n1, float n2, float
     float across = 1.0 + 0.5 * roughness;
     const vec4 node = vec4(-0.8611363116, -0.3399810436, 0.3399810436, 0.8611363116);
     const vec4 weight = vec4(0.3478548451, 0.6521451549, 0.6521451549, 0.3478548451);
-    float sum = 0.0, total = 0.0;
+    float sum = 0.0, total = 0.0, lean = 0.0, lean2 = 0.0;
     for (int i = 0; i < 4; ++i) {
         float a = 0.5 * (lo + hi) + 0.5 * (hi - lo) * node[i];
         float seen = max(c - sinE * a, 0.0);
         float w = weight[i] * seen * exp(-0.5 * a * a / (s * s));
-        sum += w * owFresnel(seen * inversesqrt(across + a * a), n1, n2, q);
+        float wf = w * owFresnel(seen * inversesqrt(across + a * a), n1, n2, q);
+        sum += wf;
         total += w;
+        lean -= wf * a; // a tilts away from the eye
+        lean2 += wf * a * a;
     }
-    return total > 0.0 ? sum / total : owFresnel(c, n1, n2, q);
+    if (!(total > 0.0) || !(sum > 0.0)) return vec3(owFresnel(c, n1, n2, q), 0.0, 0.0);
+    lean /= sum;
+    return vec3(sum / total, lean, sqrt(max(lean2 / sum - lean * lean, 0.0)));
+}
+
+float owFresnelOverSlopes(float cosE, float roughness, float n1, float n2, float q)
+{
+    return owFresnelAndLean(cosE, roughness, n1, n2, q).x;
 }
 
 // The standard normal's distribution (Abramowitz and Stegun's 7.1.26 for erf, within 1.5e-7)

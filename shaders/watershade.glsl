@@ -72,21 +72,20 @@ vec3 owSampleProjectedSpread(sampler2D tex, mat4 mvp, vec4 P, vec3 fallback, vec
     return sum / float(kSpreadTaps);
 }
 
-// The reflection blurred by the slopes the shaded normal does not show (their variance
-// `roughness`, both axes together; 0 but under the wind): the blur's (width, height) in texels of
-// the reflection pass's texture. A slope of deviation sigma = sqrt(roughness / 2) along the plane
-// of incidence turns the mirrored ray up or down by 2 sigma; one across it turns the ray sideways
-// by only 2 sigma sin(e), e the ray's elevation: at grazing angles reflections smear into
-// vertical streaks, not round blurs (the mirrored camera keeps the texture's vertical upright).
-// The pass sees a turn from its (mirrored) eye, L metres from U, at the lookup point P D metres
-// on, as the angle turn D / (L + D) (at infinity: the turn itself); the blur spans it either way.
-vec2 owReflectionSpread(vec3 U, vec4 P, vec3 Rr, float roughness)
+// The reflection blurred by the slopes the shaded normal does not show: the blur's (width, height)
+// in texels of the reflection pass's texture, for seen facets whose slopes deviate by `slopes`
+// (along the plane of incidence, across it; 0 but under the wind). A slope a along the plane turns
+// the mirrored ray up or down by 2a; one across it turns the ray sideways by only 2a sin(e), e the
+// ray's elevation: at grazing angles reflections smear into vertical streaks, not round blurs (the
+// mirrored camera keeps the texture's vertical upright). The pass sees a turn from its (mirrored)
+// eye, L metres from U, at the lookup point P D metres on, as the angle turn D / (L + D) (at
+// infinity: the turn itself); the blur spans it either way.
+vec2 owReflectionSpread(vec3 U, vec4 P, vec3 Rr, vec2 slopes)
 {
-    float turn = 2.0 * sqrt(0.5 * max(roughness, 0.0));
-    float seen = P.w > 0.5 ? turn * length(P.xyz - U) / (length(osgWater_EyeLocal - U) + length(P.xyz - U)) : turn;
+    float seen = P.w > 0.5 ? length(P.xyz - U) / (length(osgWater_EyeLocal - U) + length(P.xyz - U)) : 1.0;
     float texelsPerRadian = 0.5 * float(textureSize(osgWater_ReflectionTex, 0).y) * osgWater_ReflectionProj[1][1];
-    float tall = 2.0 * seen * texelsPerRadian;
-    return vec2(tall * abs(Rr.z), tall);
+    vec2 turn = 2.0 * 2.0 * seen * texelsPerRadian * slopes;
+    return vec2(turn.y * abs(Rr.z), turn.x);
 }
 
 // The same for a ray along `dir` whose lookup point is P: where P falls outside the texture (or
@@ -255,7 +254,8 @@ vec3 owShadeWater(vec3 U, vec3 Nup, vec3 E, float roughness, out vec4 debugOut)
 #ifndef OSGWATER_EYE_BELOW
     R = refract(-E, N, n1 / n2); // never zero from air into water
 #ifdef OSGWATER_WIND
-    F = owFresnelOverSlopes(cosE, roughness, n1, n2, osgWater_FresnelQ); // the slopes below the pixel
+    vec3 lean = owFresnelAndLean(cosE, roughness, n1, n2, osgWater_FresnelQ); // the slopes below the pixel
+    F = lean.x;
 #else
     F = owFresnel(cosE, n1, n2, osgWater_FresnelQ); // the sum's waves are all drawn
 #endif
@@ -276,11 +276,28 @@ vec3 owShadeWater(vec3 U, vec3 Nup, vec3 E, float roughness, out vec4 debugOut)
 #endif
 #endif
 
-    // reflection, eq. 6 / 15 (under water the reflection pass already holds the water's tint)
+    // reflection, eq. 6 / 15 (under water the reflection pass already holds the water's tint),
+    // read along the mirror ray of the facets the eye sees below the pixel (owFresnelAndLean: they
+    // lean towards the eye), blurred by their spread. The debug lookup stays the normal's own mirror ray:
+    // the benchmark measures the search on it; the image error measures what the tilt reads.
+    vec3 Rseen = Rr;
+    float slopes = sqrt(max(0.5 * roughness, 0.0));
+    vec2 seenSlopes = vec2(slopes);
+#if defined(OSGWATER_WIND) && !defined(OSGWATER_EYE_BELOW)
+    vec3 towardsEye = E - cosE * N;
+    float across = length(towardsEye);
+    if (across > 1e-6) Rseen = reflect(-E, normalize(N + (lean.y / across) * towardsEye));
+    seenSlopes.x = lean.z;
+#endif
     int readsBefore = owDepthReads;
-    vec4 reflP = owReflectionLookupPoint(U, Rr, below);
+    vec4 reflP = owReflectionLookupPoint(U, Rseen, below);
     int reflectionReads = owDepthReads - readsBefore;
+#if defined(OSGWATER_DEBUG) && OSGWATER_DEBUG == OSGWATER_DEBUG_REFLECTION_LOOKUP && defined(OSGWATER_WIND) && !defined(OSGWATER_EYE_BELOW)
+    vec4 mirrorP = owReflectionLookupPoint(U, Rr, below);
+    vec4 debugRefl = vec4(mirrorP.xyz, mirrorP.w > 0.5 ? 2.0 : 3.0);
+#else
     vec4 debugRefl = vec4(reflP.xyz, reflP.w > 0.5 ? 2.0 : 3.0);
+#endif
     // the surroundings above the water, for reflections seen from above
 #if defined(OSGWATER_ENVIRONMENT) && !defined(OSGWATER_EYE_BELOW)
     const bool environment = true;
@@ -298,11 +315,11 @@ vec3 owShadeWater(vec3 U, vec3 Nup, vec3 E, float roughness, out vec4 debugOut)
     F = tir ? 1.0 : 0.0;
 #else
     bool fromEnvironment = false;
-    vec2 spread = owReflectionSpread(U, reflP, Rr, roughness);
+    vec2 spread = owReflectionSpread(U, reflP, Rseen, seenSlopes);
     vec3 reflCol = environment
-        ? owSampleOrEnvironment(osgWater_ReflectionTex, osgWater_ReflectionMVP, reflP, Rr, osgWater_WaterColor, spread, fromEnvironment)
+        ? owSampleOrEnvironment(osgWater_ReflectionTex, osgWater_ReflectionMVP, reflP, Rseen, osgWater_WaterColor, spread, fromEnvironment)
         : owSampleProjectedSpread(osgWater_ReflectionTex, osgWater_ReflectionMVP, reflP, osgWater_WaterColor, spread);
-    if (fromEnvironment) debugRefl = vec4(Rr, 3.0); // the lookup became the ray's direction
+    if (fromEnvironment) debugRefl = vec4(Rseen, 3.0); // the lookup became the ray's direction
 #endif
 
     vec3 refrCol = osgWater_WaterColor;

@@ -104,6 +104,49 @@ TEST(Optics, FresnelOverTheHiddenSlopesIsTheVisibleFacetsMean)
         EXPECT_NEAR(fresnelOverSlopes(2, c, 0.0f, kAir, kWater, 5.0f), fresnelExact(c, kAir, kWater), 1e-4f) << c;
 }
 
+// Where the reflected light comes from: the seen facets' mean slope towards the eye and its
+// deviation, each facet weighted by its area seen from the eye times its own reflectance, against
+// the full integral over both slopes (as above), for the exact curve, from grazing to facing the
+// water. Within 0.15 of the slopes' deviation s (four nodes for a moment of a curve that climbs
+// from 1 to 0.02 across them; the mean's share of the mirror ray's rise is what the image needs).
+// At grazing under a breeze the light leans towards the eye by over half a deviation: the far
+// water mirrors the sky above its mean normal's mirror ray.
+TEST(Optics, TheReflectedLightLeansTowardsTheEyeAsItsFacetsAreSeenAndReflect)
+{
+    for (double roughness : { 0.001, 0.0286, 0.12 }) {
+        const double s = std::sqrt(0.5 * roughness);
+        double worst = 0.0;
+        for (double cosE : { 0.0, 0.01, 0.02, 0.05, 0.1, 0.15, 0.2, 0.3, 0.4, 0.5, 0.6, 0.8, 1.0 }) {
+            const double sinE = std::sqrt(1.0 - cosE * cosE);
+            double light = 0.0, lean = 0.0, lean2 = 0.0;
+            const int n = 400;
+            for (int i = 0; i < n; ++i)
+                for (int j = 0; j < n / 2; ++j) {
+                    const double a = s * (-6.0 + 12.0 * (i + 0.5) / n), b = s * (-6.0 + 12.0 * (j + 0.5) / (n / 2));
+                    const double seen = cosE - sinE * a; // a > 0: tilted away from the eye
+                    if (seen <= 0.0) continue;
+                    const double w = seen * std::exp(-0.5 * (a * a + b * b) / (s * s))
+                                     * fresnelExact(float(seen / std::sqrt(1.0 + a * a + b * b)), kAir, kWater);
+                    light += w;
+                    lean -= w * a;
+                    lean2 += w * a * a;
+                }
+            const double mean = lean / light, deviation = std::sqrt(std::max(lean2 / light - mean * mean, 0.0));
+            const glm::vec3 mirror = fresnelAndLean(2, float(cosE), float(roughness), kAir, kWater, 5.0f);
+            EXPECT_NEAR(mirror.y, mean, 0.15 * s) << "roughness " << roughness << ", cos " << cosE;
+            EXPECT_NEAR(mirror.z, deviation, 0.15 * s) << "roughness " << roughness << ", cos " << cosE;
+            EXPECT_EQ(mirror.x, fresnelOverSlopes(2, float(cosE), float(roughness), kAir, kWater, 5.0f));
+            worst = std::max({ worst, std::fabs(mirror.y - mean) / s, std::fabs(mirror.z - deviation) / s });
+            if (roughness == 0.0286 && cosE == 0.02) EXPECT_GT(mean, 0.5 * s); // a breeze's far water
+            if (cosE == 1.0) EXPECT_NEAR(mean, 0.0, 1e-3 * s);                  // facing it: no lean
+        }
+        RecordProperty("worst_" + std::to_string(roughness), std::to_string(worst));
+        std::cout << "roughness " << roughness << ": worst " << worst << " s\n";
+    }
+    // no hidden slopes: no lean
+    EXPECT_NEAR(fresnelAndLean(2, 0.1f, 0.0f, kAir, kWater, 5.0f).y, 0.0f, 1e-9f);
+}
+
 // The share of the mirror rays sent back under the level, against the full integral over both
 // hidden slopes (each facet's own mirror ray in 3D, weighted by its area seen from the eye, on a
 // fine grid), for drawn normals tilted toward and away from the eye and level ones, from grazing to

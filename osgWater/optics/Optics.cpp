@@ -109,7 +109,7 @@ float fresnelModel(int model, float cosE, float n1, float n2, float q)
     return fresnelSchlick(cosE, normalReflectance(n1, n2), q);
 }
 
-float fresnelOverSlopes(int model, float cosE, float roughness, float n1, float n2, float q)
+glm::vec3 fresnelAndLean(int model, float cosE, float roughness, float n1, float n2, float q)
 {
     const float s = std::sqrt(std::max(0.5f * roughness, 1.0e-12f));
     const float c = std::min(std::max(cosE, 0.0f), 1.0f);
@@ -118,15 +118,25 @@ float fresnelOverSlopes(int model, float cosE, float roughness, float n1, float 
     const float across = 1.0f + 0.5f * roughness;
     const float node[4] = { -0.8611363116f, -0.3399810436f, 0.3399810436f, 0.8611363116f };
     const float weight[4] = { 0.3478548451f, 0.6521451549f, 0.6521451549f, 0.3478548451f };
-    float sum = 0.0f, total = 0.0f;
+    float sum = 0.0f, total = 0.0f, lean = 0.0f, lean2 = 0.0f;
     for (int i = 0; i < 4; ++i) {
         const float a = 0.5f * (lo + hi) + 0.5f * (hi - lo) * node[i];
         const float seen = std::max(c - sinE * a, 0.0f);
         const float w = weight[i] * seen * std::exp(-0.5f * a * a / (s * s));
-        sum += w * fresnelModel(model, seen / std::sqrt(across + a * a), n1, n2, q);
+        const float wf = w * fresnelModel(model, seen / std::sqrt(across + a * a), n1, n2, q);
+        sum += wf;
         total += w;
+        lean -= wf * a; // a tilts away from the eye
+        lean2 += wf * a * a;
     }
-    return total > 0.0f ? sum / total : fresnelModel(model, c, n1, n2, q);
+    if (!(total > 0.0f) || !(sum > 0.0f)) return glm::vec3(fresnelModel(model, c, n1, n2, q), 0.0f, 0.0f);
+    lean /= sum;
+    return glm::vec3(sum / total, lean, std::sqrt(std::max(lean2 / sum - lean * lean, 0.0f)));
+}
+
+float fresnelOverSlopes(int model, float cosE, float roughness, float n1, float n2, float q)
+{
+    return fresnelAndLean(model, cosE, roughness, n1, n2, q).x;
 }
 
 float shareSentUnder(float cosE, float sinMirror, float roughness)

@@ -53,6 +53,11 @@ OSGWATER_EXPORT float fresnelModel(int model, float cosE, float n1, float n2, fl
 //! variance `roughness` (mean |grad h|^2, alike every way), each facet weighted by its area seen from
 //! the eye (owFresnelOverSlopes: four Gauss-Legendre nodes along the plane of incidence).
 OSGWATER_EXPORT float fresnelOverSlopes(int model, float cosE, float roughness, float n1, float n2, float q);
+//! The same with where the reflected light comes from (owFresnelAndLean): (F, the mean slope
+//! towards the eye of the seen facets weighted by the light each reflects, that slope's deviation).
+//! The seen facets lean towards the eye (more of their area faces it, the far-tilted hide), so their
+//! mirror rays rise; the most tilted reflect least, so the light's lean is the F-weighted mean.
+OSGWATER_EXPORT glm::vec3 fresnelAndLean(int model, float cosE, float roughness, float n1, float n2, float q);
 //! The share of the mirror rays that the facets the eye sees send back under the level, where the
 //! pixel's normal (cosE from the eye, its mirror ray's sine of elevation sinMirror) hides slopes of
 //! variance `roughness` (owShareSentUnder): a facet tilted away from the eye by a slope a along the
