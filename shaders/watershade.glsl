@@ -336,7 +336,11 @@ vec3 owShadeWater(vec3 U, vec3 Nup, vec3 E, float roughness, out vec4 debugOut)
 #if defined(OSGWATER_DEBUG) && OSGWATER_DEBUG == OSGWATER_DEBUG_REFLECTION_LOOKUP
     debugOut = debugRefl;
 #elif defined(OSGWATER_DEBUG) && OSGWATER_DEBUG == OSGWATER_DEBUG_FRESNEL
+#if defined(OSGWATER_WIND) && !defined(OSGWATER_EYE_BELOW)
+    debugOut = vec4(F, lean.yz, 2.0);
+#else
     debugOut = vec4(F, 0.0, 0.0, 2.0);
+#endif
 #elif defined(OSGWATER_DEBUG) && OSGWATER_DEBUG == OSGWATER_DEBUG_WORK
     debugOut = vec4(float(owDepthReads - readsBefore - reflectionReads), float(reflectionReads), 0.0, 2.0);
 #else

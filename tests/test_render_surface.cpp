@@ -328,6 +328,7 @@ namespace {
 // (DEBUG_SURFACE), and its colour when the frame without debug output was read
 struct WindPixel {
     float F = 0.0f, roughness = 0.0f, cosE = 0.0f;
+    float lean = 0.0f, leanDeviation = 0.0f; // where the reflected light comes from (DEBUG_FRESNEL g, b)
     glm::vec3 E{ 0.0f }, N{ 0.0f };
     const float* colour = nullptr;
 };
@@ -355,6 +356,8 @@ std::vector<WindPixel> windPixels(Harness& h, WaterNode& water, const osg::Vec3d
             if (u[3] != 2.0f || slopes[3] != 2.0f || f[3] != 2.0f) continue;
             WindPixel p;
             p.F = f[0];
+            p.lean = f[1];
+            p.leanDeviation = f[2];
             p.roughness = slopes[2];
             p.E = glm::normalize(glm::vec3(eye.x() - u[0], eye.y() - u[1], eye.z() - u[2]));
             p.N = optics::faceNormal(glm::normalize(glm::vec3(-slopes[0], -slopes[1], 1.0f)), p.E);
@@ -425,14 +428,19 @@ TEST(RenderSurface, UnderTheWindAPixelsReflectanceIsAveragedOverTheSlopesItHides
     const std::vector<WindPixel> pixels = windPixels(h, *water, osg::Vec3d(0, -60, 3), osg::Vec3d(0, 0, 0), false, frames);
     ASSERT_EQ(frames.size(), 3u);
     const WaterSettings* s = water->getSettings();
-    std::vector<double> error;
-    double pointF = 0.0, meanF = 0.0;
+    std::vector<double> error, leanError;
+    double pointF = 0.0, meanF = 0.0, lean = 0.0, deviation = 0.0;
     size_t grazing = 0;
     for (const WindPixel& p : pixels) {
         const float expected = optics::fresnelOverSlopes(s->getFresnelModel(), p.cosE, p.roughness, s->getAirIOR(),
                                                          s->getWaterIOR(), s->getFresnelModelExponent());
         error.push_back(std::fabs(p.F - expected));
+        const glm::vec3 light = optics::fresnelAndLean(s->getFresnelModel(), p.cosE, p.roughness, s->getAirIOR(),
+                                                       s->getWaterIOR(), s->getFresnelModelExponent());
+        leanError.push_back(std::max(std::fabs(p.lean - light.y), std::fabs(p.leanDeviation - light.z)));
         if (p.cosE < 0.05f) {
+            lean += p.lean;
+            deviation += std::sqrt(0.5 * p.roughness);
             pointF += optics::fresnelModel(s->getFresnelModel(), p.cosE, s->getAirIOR(), s->getWaterIOR(),
                                            s->getFresnelModelExponent());
             meanF += p.F;
@@ -449,4 +457,12 @@ TEST(RenderSurface, UnderTheWindAPixelsReflectanceIsAveragedOverTheSlopesItHides
     EXPECT_LT(median, 2e-3);
     EXPECT_LT(p99, 0.02); // the normal's and the roughness's reads a Newton step apart
     EXPECT_LT(meanF / grazing, pointF / grazing - 0.1) << "far off, the slopes bring F down from the normal's";
+    // and the reflection is read where the seen facets' light comes from: the mirror's lean
+    const double leanMedian = percentile(leanError, 0.5), leanP99 = percentile(leanError, 0.99);
+    RecordProperty("lean_median_error", std::to_string(leanMedian));
+    RecordProperty("lean_p99_error", std::to_string(leanP99));
+    RecordProperty("grazing_lean_over_deviation", std::to_string(lean / deviation));
+    EXPECT_LT(leanMedian, 1e-3);
+    EXPECT_LT(leanP99, 0.01);
+    EXPECT_GT(lean / deviation, 0.5) << "far off, the seen facets lean towards the eye";
 }
