@@ -356,15 +356,8 @@ owBottomHit owOneStepSearch(vec3 U, vec3 R, float scale, float maxDv)
 owBottomHit owIterativeSearch(vec3 U, vec3 R, int steps, float budget)
 {
     owBottomHit best = owBottomHit(false, U, U, 0.0);
-    // U's own texel may show nothing behind it: a crest ahead of an eye at the water stands above
-    // everything the pass (its camera at the eye, the scene below the level) sees. The refracted ray
-    // goes down into what it sees: step along it, doubling from a quarter of U's distance, until a
-    // point's texel shows something (only such pixels pay; the others find it at once).
     vec3 Aprev;
-    bool seen = owBottomAlongRay(U, Aprev);
-    float t = 0.25 * length(U);
-    for (int k = 0; k < 10 && !seen; ++k, t *= 2.0) seen = owBottomAlongRay(U + t * R, Aprev);
-    if (!seen) return best;
+    if (!owBottomAlongRay(U, Aprev)) return best;
     best = owBottomHit(true, Aprev, Aprev, 1e30);
     vec2 tolerance = owTexelTolerance(osgWater_RefractionProj, osgWater_RefractionDepth, budget);
     vec3 W = U + length(Aprev - U) * R;

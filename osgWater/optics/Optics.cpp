@@ -262,13 +262,8 @@ BottomHit iterativeSearch(const glm::vec3& U, const glm::vec3& R, int steps, con
     const DepthLookup lookup = counted(uncounted, reads);
     BottomHit best;
     steps = std::min(std::max(steps, 1), 8);
-    // U's own texel may show nothing behind it (a crest ahead of an eye at the water stands above
-    // all the pass sees): step along R, doubling from a quarter of U's distance, until a point's does
     glm::vec3 Aprev;
-    bool seen = bottomAlongRay(U, lookup, Aprev);
-    float t = 0.25f * glm::length(U);
-    for (int k = 0; k < 10 && !seen; ++k, t *= 2.0f) seen = bottomAlongRay(U + t * R, lookup, Aprev);
-    if (!seen) return best;
+    if (!bottomAlongRay(U, lookup, Aprev)) return best;
     // fallback: the bottom straight behind U (no refraction offset) beats no bottom at all
     best.valid = true;
     best.W = best.A = Aprev;
