@@ -292,12 +292,12 @@ vec3 owShadeWater(vec3 U, vec3 Nup, vec3 E, float roughness, out vec4 debugOut)
     int readsBefore = owDepthReads;
     vec4 reflP = owReflectionLookupPoint(U, Rseen, below);
     int reflectionReads = owDepthReads - readsBefore;
-#if defined(OSGWATER_DEBUG) && OSGWATER_DEBUG == OSGWATER_DEBUG_REFLECTION_LOOKUP && defined(OSGWATER_WIND) && !defined(OSGWATER_EYE_BELOW)
-    vec4 mirrorP = owReflectionLookupPoint(U, Rr, below);
-    vec4 debugRefl = vec4(mirrorP.xyz, mirrorP.w > 0.5 ? 2.0 : 3.0);
+#if defined(OSGWATER_DEBUG) && OSGWATER_DEBUG == OSGWATER_DEBUG_REFLECTION_LOOKUP
+    vec4 mirrorP = owReflectionLookupPoint(U, Rr, below); // reflP itself wherever Rseen is Rr
 #else
-    vec4 debugRefl = vec4(reflP.xyz, reflP.w > 0.5 ? 2.0 : 3.0);
+    vec4 mirrorP = reflP;
 #endif
+    vec4 debugRefl = vec4(mirrorP.xyz, mirrorP.w > 0.5 ? 2.0 : 3.0);
     // the surroundings above the water, for reflections seen from above
 #if defined(OSGWATER_ENVIRONMENT) && !defined(OSGWATER_EYE_BELOW)
     const bool environment = true;
