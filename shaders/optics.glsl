@@ -353,11 +353,21 @@ owBottomHit owOneStepSearch(vec3 U, vec3 R, float scale, float maxDv)
 // A candidate whose camera ray sees sky (it went under a clipped shore, or off the texture) is
 // no bottom: the next candidate is half way back towards U. If no candidate sees a bottom, A_1
 // (the bottom straight behind U, no refraction offset) is the answer: better than none.
+// Mirrored in osgWater::optics::iterativeSearch.
 owBottomHit owIterativeSearch(vec3 U, vec3 R, int steps, float budget)
 {
     owBottomHit best = owBottomHit(false, U, U, 0.0);
     vec3 Aprev;
-    if (!owBottomAlongRay(U, Aprev)) return best;
+    bool seen = owBottomAlongRay(U, Aprev);
+#ifdef OSGWATER_EYE_AMONG_WAVES
+    // An eye within the waves' height of the level: U's own texel may show nothing behind it, a crest
+    // ahead standing above everything the pass (its camera at the eye, the scene beyond the level)
+    // sees. The refracted ray goes on into what it sees: step along it, doubling from a quarter of
+    // U's distance, until a point's texel shows something. Only such eyes compile these reads.
+    float t = 0.25 * length(U);
+    for (int k = 0; k < 10 && !seen; ++k, t *= 2.0) seen = owBottomAlongRay(U + t * R, Aprev);
+#endif
+    if (!seen) return best;
     best = owBottomHit(true, Aprev, Aprev, 1e30);
     vec2 tolerance = owTexelTolerance(osgWater_RefractionProj, osgWater_RefractionDepth, budget);
     vec3 W = U + length(Aprev - U) * R;

@@ -8,7 +8,7 @@
 // Debug output (OSGWATER_DEBUG, one of the OSGWATER_DEBUG_* of contract.glsl): alpha says what rgb
 // holds (see osgWater::DebugOutput). The eye's side is a define (set per view), not a uniform: a
 // software rasteriser runs both sides of a branch.
-#pragma import_defines(OSGWATER_GRID, OSGWATER_EYE_BELOW, OSGWATER_REFRACTION, OSGWATER_REFLECTION, OSGWATER_FRESNEL, OSGWATER_UNDERWATER, OSGWATER_NO_REFLECTION, OSGWATER_NO_REFRACTION, OSGWATER_SEARCH_STEPS, OSGWATER_ENVIRONMENT, OSGWATER_DEBUG)
+#pragma import_defines(OSGWATER_GRID, OSGWATER_EYE_BELOW, OSGWATER_EYE_AMONG_WAVES, OSGWATER_REFRACTION, OSGWATER_REFLECTION, OSGWATER_FRESNEL, OSGWATER_UNDERWATER, OSGWATER_NO_REFLECTION, OSGWATER_NO_REFRACTION, OSGWATER_SEARCH_STEPS, OSGWATER_ENVIRONMENT, OSGWATER_DEBUG)
 #pragma include "contract.glsl"
 #pragma include "optics.glsl"
 #pragma include "srgb.glsl"

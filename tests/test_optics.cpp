@@ -606,6 +606,26 @@ TEST(Optics, CandidatesThatSeeSkyStepBackTowardsU)
     EXPECT_NEAR(f.W.z, -10.0f, 1e-4f);
 }
 
+// A crest ahead of an eye at the water: the camera ray through U points above everything the
+// pass sees (a floor y = -2 in its eye space, seen only below the camera's horizon), but the
+// refracted ray goes down into it. The search steps along R until a point sees the floor, then
+// converges on the exact hit; giving up at U's own texel (sky) would miss it. Only for an eye among
+// the waves: elsewhere U's texel always sees past U, and the search keeps its one read.
+TEST(Optics, AShadedPointAboveAllThePassSeesStillFindsTheBottomAlongItsRay)
+{
+    DepthLookup floor = [](const glm::vec3& P) {
+        return P.y < 0.0f && P.z < 0.0f ? DepthSample{ true, P.z * (-2.0f / P.y) } : DepthSample{ false, 0.0f };
+    };
+    const glm::vec3 U(0.0f, 0.5f, -5.0f), R = glm::normalize(glm::vec3(0.0f, -0.8f, -0.6f));
+    glm::vec3 A;
+    ASSERT_FALSE(bottomAlongRay(U, floor, A)) << "U's own texel shows nothing";
+    const glm::vec3 exact = U + R * (2.5f / 0.8f); // y = -2
+    EXPECT_FALSE(iterativeSearch(U, R, 8, floor).valid) << "an eye above the waves takes no steps";
+    const BottomHit h = iterativeSearch(U, R, 8, floor, {}, nullptr, true);
+    ASSERT_TRUE(h.valid);
+    EXPECT_LT(glm::length(h.W - exact), 1e-3f) << h.W.x << " " << h.W.y << " " << h.W.z;
+}
+
 TEST(Optics, ToleranceStopsTheSearchEarlyWithoutLosingAccuracy)
 {
     // planar bottom: W_2 is already exact, so a 1 cm tolerance saves the later lookups

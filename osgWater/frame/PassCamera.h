@@ -54,6 +54,8 @@ struct OSGWATER_EXPORT PassContext {
     double clearance = 0.0;       //!< wave amplitude + clip offset: the planes clear the crests
     double fovExtension = 1.5;
     bool eyeBelow = false;
+    bool eyeAmongWaves = false;   //!< the eye within the waves' height of the level: a crest can
+                                  //!< stand above all the refraction pass sees
     bool truePositions = false;   //!< the debug output shows the refracted ray's point: a refraction pass
                                   //!< drawing virtual vertices writes their true places (a float target)
     osg::Vec4 clearColor;         //!< the view's background as linear light (the view's own is a display value)

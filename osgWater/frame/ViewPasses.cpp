@@ -114,6 +114,7 @@ void ViewPasses::update(const PassContext& ctx, const PassPlan& plan, const Scen
     setPassMatrices(ss, "osgWater_Refraction", *_refraction);
     ss->getUniform("osgWater_EyeLocal")->set(osg::Vec3f(eyePosition(ctx.view)));
     setDefineIf(ss, "OSGWATER_EYE_BELOW", ctx.eyeBelow);
+    setDefineIf(ss, "OSGWATER_EYE_AMONG_WAVES", ctx.eyeAmongWaves);
     // the shader reads a pass's texture only when the pass ran this frame
     setDefineIf(ss, "OSGWATER_NO_REFLECTION", !plan.runs(PASS_REFLECTION));
     setDefineIf(ss, "OSGWATER_NO_REFRACTION", !plan.runs(PASS_REFRACTION));

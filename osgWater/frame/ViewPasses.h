@@ -36,7 +36,7 @@ public:
     //! The view's SceneLighting, pushed above the WaterNode's children in the view itself.
     osg::StateSet* getLightingStateSet() const { return _lighting.get(); }
     //! The water shader's per-view inputs: the pass textures, this view's pass matrices, the
-    //! defines OSGWATER_EYE_BELOW, OSGWATER_NO_REFLECTION, OSGWATER_NO_REFRACTION.
+    //! defines OSGWATER_EYE_BELOW, OSGWATER_EYE_AMONG_WAVES, OSGWATER_NO_REFLECTION, OSGWATER_NO_REFRACTION.
     osg::StateSet* getWaterInputs() const { return _waterInputs.get(); }
 
     //! Whether the targets have these sizes (width, height).

@@ -356,6 +356,7 @@ WaterNodeImpl::ViewFrame WaterNodeImpl::gatherFacts(osgUtil::CullVisitor& cv)
     double eyeHeight = eye.z() - ctx.level;
     if (boxSeen || std::abs(eyeHeight) <= _surface->getMaxAmplitude()) eyeHeight = eyeHeightAboveSurface(eye, t);
     ctx.eyeBelow = eyeHeight < 0.0;
+    ctx.eyeAmongWaves = _surface->usesGrid() && std::abs(eye.z() - ctx.level) <= _surface->getMaxAmplitude();
     ctx.fovExtension = s.fovExtensionAt(eyeHeight);
 
     FrameFacts& f = v.facts;

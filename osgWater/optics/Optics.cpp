@@ -257,13 +257,18 @@ static DepthLookup counted(const DepthLookup& lookup, int* reads)
 }
 
 BottomHit iterativeSearch(const glm::vec3& U, const glm::vec3& R, int steps, const DepthLookup& uncounted,
-                          const SearchTolerance& tolerance, int* reads)
+                          const SearchTolerance& tolerance, int* reads, bool eyeAmongWaves)
 {
     const DepthLookup lookup = counted(uncounted, reads);
     BottomHit best;
     steps = std::min(std::max(steps, 1), 8);
     glm::vec3 Aprev;
-    if (!bottomAlongRay(U, lookup, Aprev)) return best;
+    bool seen = bottomAlongRay(U, lookup, Aprev);
+    // an eye among the waves: U's own texel may show nothing (a crest ahead stands above all the
+    // pass sees); step along R, doubling from a quarter of U's distance, until a point's does
+    float t = 0.25f * glm::length(U);
+    for (int k = 0; eyeAmongWaves && k < 10 && !seen; ++k, t *= 2.0f) seen = bottomAlongRay(U + t * R, lookup, Aprev);
+    if (!seen) return best;
     // fallback: the bottom straight behind U (no refraction offset) beats no bottom at all
     best.valid = true;
     best.W = best.A = Aprev;

@@ -133,12 +133,15 @@ OSGWATER_EXPORT BottomHit oneStepSearch(const glm::vec3& U, const glm::vec3& R, 
 //! Iterative search of thesis §7.1: tests `steps` candidates W_1..W_n (each one depth lookup,
 //! plus one for A_1) and keeps the one with the smallest |A - W|. A candidate that sees sky
 //! (under a clipped shore, off the texture) is replaced by the point half way back to U; with no
-//! candidate on a bottom the answer is A_1, the bottom straight behind U. Invalid only when
-//! U itself sees sky. The search stops early once a candidate is within `tolerance` of its
-//! bottom point (0: always all steps). `reads`, when given: how many depth lookups it made.
+//! candidate on a bottom the answer is A_1, the bottom straight behind U. Invalid when U itself
+//! sees sky, unless `eyeAmongWaves` (the eye within the waves' height of the level, where a crest
+//! ahead can stand above all the pass sees): then A_1 is the first of ten points along R, doubling
+//! from a quarter of U's distance, that sees a bottom, and invalid when none does. The search
+//! stops early once a candidate is within `tolerance` of its bottom point (0: always all steps).
+//! `reads`, when given: how many depth lookups it made.
 OSGWATER_EXPORT BottomHit iterativeSearch(const glm::vec3& U, const glm::vec3& R, int steps,
                                           const DepthLookup& lookup, const SearchTolerance& tolerance = {},
-                                          int* reads = nullptr);
+                                          int* reads = nullptr, bool eyeAmongWaves = false);
 
 //! The reflected ray U + t R (t > 0) in the reflection pass's eye space (the mirrored scene): its
 //! hit, or invalid when it meets nothing (look it up by its direction). f(t), how far U + t R lies
