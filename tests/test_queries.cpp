@@ -134,6 +134,50 @@ TEST(Queries, QueriesAreSafeWhileFramesAdvance)
     EXPECT_GT(asked, 0);
 }
 
+// The wind's cascades are one set of arrays brought to whichever time is asked. Threads asking at
+// two times at once, heights and rays alike, must each get the surface at their own time: the
+// same answers, bit for bit, as one thread asking alone. (The rays' march holds the cascades for
+// its whole length, and a thread at the other time must wait for it, not change them under it.)
+TEST(Queries, WindQueriesFromThreadsAtTwoTimesAreEachTheSurfaceAtTheirOwn)
+{
+    osg::ref_ptr<WaterSurface> s = new WaterSurface;
+    s->setWaveModel(WaterSurface::WAVES_WIND);
+    const double times[2] = { 1.5, 7.25 };
+    const int n = 16;
+    auto place = [](int i) { return osg::Vec2d(-20.0 + 2.7 * i, 13.0 - 1.9 * i); };
+    auto ray = [&](int i, osg::Vec3d& a, osg::Vec3d& b) {
+        const osg::Vec2d p = place(i);
+        a.set(p.x() - 15.0, p.y(), 0.4);
+        b.set(p.x() + 15.0, p.y() + 3.0, -0.6);
+    };
+    double heights[2][n], hits[2][n];
+    for (int k = 0; k < 2; ++k)
+        for (int i = 0; i < n; ++i) {
+            heights[k][i] = s->height(place(i).x(), place(i).y(), times[k]);
+            osg::Vec3d a, b, point, normal;
+            ray(i, a, b);
+            ASSERT_TRUE(s->intersect(a, b, times[k], hits[k][i], point, normal)) << i;
+        }
+    ASSERT_NE(heights[0][0], heights[1][0]) << "the two times must differ in their waves";
+    std::atomic<int> wrong{ 0 }, asked{ 0 };
+    std::vector<std::thread> threads;
+    for (int r = 0; r < 4; ++r)
+        threads.emplace_back([&, r] {
+            const int k = r % 2;
+            for (int round = 0; round < 40; ++round)
+                for (int i = 0; i < n; ++i) {
+                    if (s->height(place(i).x(), place(i).y(), times[k]) != heights[k][i]) ++wrong;
+                    osg::Vec3d a, b, point, normal;
+                    double ratio = -1.0;
+                    ray(i, a, b);
+                    if (!s->intersect(a, b, times[k], ratio, point, normal) || ratio != hits[k][i]) ++wrong;
+                    asked += 2;
+                }
+        });
+    for (std::thread& t : threads) t.join();
+    EXPECT_EQ(wrong, 0) << "of " << asked;
+}
+
 TEST(Queries, PickingMeetsTheAnimatedSurfaceNotTheFlatGrid)
 {
     osg::ref_ptr<WaterNode> water = new WaterNode;

@@ -284,7 +284,7 @@ TEST(WaveCascades, TheHeightQueryMeetsTheChoppySurface)
         const WaveCascades::Texel at = w.sample(qx, qy);
         const double x = qx + at.displacement.x(), y = qy + at.displacement.y();
         moved = std::max(moved, std::hypot(double(at.displacement.x()), double(at.displacement.y())));
-        EXPECT_NEAR(w.height(x, y), at.displacement.z(), 1e-3) << "over (" << x << ", " << y << ")";
+        EXPECT_NEAR(w.height(x, y), at.displacement.z(), 1e-6) << "over (" << x << ", " << y << ")";
     }
     EXPECT_GT(moved, 0.1); // the waves do move the surface sideways, by more than the tolerance
 }

@@ -159,30 +159,27 @@ SpectralWaves::SpectralWaves(const WaveCascades::Params& params)
     fill();
 }
 
-void SpectralWaves::at(double t) const
+void SpectralWaves::bringTo(double t) const
 {
-    if (!std::isfinite(t)) t = 0.0;
     if (t != _cascades.time()) _cascades.update(t);
 }
 
-double SpectralWaves::height(double x, double y, double t) const
+SpectralWaves::Sampler SpectralWaves::at(double t) const
 {
-    std::lock_guard<std::mutex> guard(_lock);
-    at(t);
-    return _cascades.height(x, y);
-}
-
-osg::Vec3d SpectralWaves::normal(double x, double y, double t) const
-{
-    std::lock_guard<std::mutex> guard(_lock);
-    at(t);
-    return _cascades.normal(x, y);
+    if (!std::isfinite(t)) t = 0.0;
+    std::shared_lock<std::shared_mutex> shared(_lock);
+    if (t == _cascades.time()) return Sampler(_cascades, std::move(shared), {});
+    shared.unlock();
+    std::unique_lock<std::shared_mutex> exclusive(_lock);
+    bringTo(t);
+    return Sampler(_cascades, {}, std::move(exclusive));
 }
 
 void SpectralWaves::applyTime(double t)
 {
-    std::lock_guard<std::mutex> guard(_lock);
-    at(t);
+    if (!std::isfinite(t)) t = 0.0;
+    std::unique_lock<std::shared_mutex> guard(_lock);
+    bringTo(t);
     if (_cascades.time() != _textureTime) {
         fill();
         _textureTime = _cascades.time();
@@ -191,13 +188,13 @@ void SpectralWaves::applyTime(double t)
 
 double SpectralWaves::evaluatedTime() const
 {
-    std::lock_guard<std::mutex> guard(_lock);
+    std::shared_lock<std::shared_mutex> guard(_lock);
     return _cascades.time();
 }
 
 double SpectralWaves::textureTime() const
 {
-    std::lock_guard<std::mutex> guard(_lock);
+    std::shared_lock<std::shared_mutex> guard(_lock);
     return _textureTime;
 }
 
@@ -237,7 +234,7 @@ void SpectralWaves::fill()
 
 double SpectralWaves::meanSquareSlope() const
 {
-    std::lock_guard<std::mutex> guard(_lock);
+    std::shared_lock<std::shared_mutex> guard(_lock);
     return _tilesMeanSquareSlope + _cascades.unresolvedSlopeVariance();
 }
 

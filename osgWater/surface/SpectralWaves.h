@@ -7,6 +7,7 @@
 #include <osg/Referenced>
 #include <osg/Texture2DArray>
 #include <mutex>
+#include <shared_mutex>
 
 namespace osgWater { namespace detail {
 
@@ -28,10 +29,38 @@ class OSGWATER_EXPORT SpectralWaves : public osg::Referenced
 public:
     explicit SpectralWaves(const WaveCascades::Params& params);
 
-    //! The surface's height above its level and its unit normal over (x, y) at time t: the
-    //! cascades are brought to t when t differs from their last time (a few milliseconds).
-    double height(double x, double y, double t) const;
-    osg::Vec3d normal(double x, double y, double t) const;
+    //! The cascades at one time, held for a burst of queries (a ray's march): one lock for all of
+    //! them. Threads asking about the same time share the cascades without waiting on each other
+    //! (a lock per query made two threads spend most of their time handing a mutex back and forth).
+    //! While a thread holds one it asks this object nothing else.
+    class Sampler
+    {
+    public:
+        double height(double x, double y) const { return _cascades.height(x, y); }
+        osg::Vec3d normal(double x, double y) const { return _cascades.normal(x, y); }
+        //! The height, and the slopes (dh/dx, dh/dy) of the surface over (x, y), from one sample.
+        double heightAndSlope(double x, double y, osg::Vec2d& slope) const
+        {
+            const WaveCascades::Texel s = _cascades.over(x, y);
+            slope = s.displacedSlope();
+            return s.displacement.z();
+        }
+
+    private:
+        friend class SpectralWaves;
+        Sampler(const WaveCascades& cascades, std::shared_lock<std::shared_mutex> shared,
+                std::unique_lock<std::shared_mutex> exclusive)
+            : _cascades(cascades), _shared(std::move(shared)), _exclusive(std::move(exclusive)) {}
+        const WaveCascades& _cascades;
+        std::shared_lock<std::shared_mutex> _shared;       // the cascades were at the time asked
+        std::unique_lock<std::shared_mutex> _exclusive;    // ... or were brought to it
+    };
+    //! The cascades brought to time t when it differs from their last time (a few milliseconds).
+    Sampler at(double t) const;
+
+    //! The surface's height above its level and its unit normal over (x, y) at time t.
+    double height(double x, double y, double t) const { return at(t).height(x, y); }
+    osg::Vec3d normal(double x, double y, double t) const { return at(t).normal(x, y); }
 
     //! The texture's texels made those of time t (once a frame, the frame's time).
     void applyTime(double t);
@@ -83,10 +112,10 @@ public:
     static constexpr double HEIGHT_SIGMAS = 6.0;
 
 private:
-    void at(double t) const; // under _lock
+    void bringTo(double t) const; // under _lock, held exclusively
     void fill(); // the texture's images from the cascades
 
-    mutable std::mutex _lock;
+    mutable std::shared_mutex _lock;
     mutable WaveCascades _cascades;
     std::vector<unsigned int> _layers; // the cascades that hold waves, one texture layer each
     std::vector<double> _cascadeBound;

@@ -5,6 +5,7 @@
 #include <osg/Notify>
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <string>
 
 using namespace osgWater;
@@ -93,7 +94,7 @@ std::vector<Wave> osgWater::defaultWaves()
 
 WaterSurface::WaterSurface()
     : _level(0.0), _size(100.0f), _center(0.0f, 0.0f), _resolution(49), _layout(MESH_EYE_RINGS), _waves(defaultWaves()),
-      _model(WAVES_SUM), _uniformMesh(new osg::Geode), _revision(0), _stale(true), _waveSlope(slopeBound(_waves)),
+      _model(WAVES_SUM), _spectralMade(nullptr), _uniformMesh(new osg::Geode), _revision(0), _stale(true), _waveSlope(slopeBound(_waves)),
       _saidNoPlace(false)
 {
 }
@@ -102,7 +103,7 @@ WaterSurface::~WaterSurface() = default;
 
 WaterSurface::WaterSurface(const WaterSurface& o, const osg::CopyOp& copyop)
     : osg::Geode(o, copyop), _level(o._level), _size(o._size), _center(o._center), _resolution(o._resolution),
-      _layout(o._layout), _waves(o._waves), _model(o._model), _wind(o._wind), _userMesh(o._userMesh), _uniformMesh(new osg::Geode), _revision(0), _stale(true),
+      _layout(o._layout), _waves(o._waves), _model(o._model), _wind(o._wind), _spectralMade(nullptr), _userMesh(o._userMesh), _uniformMesh(new osg::Geode), _revision(0), _stale(true),
       _waveSlope(o._waveSlope), _saidNoPlace(false)
 {
 }
@@ -283,12 +284,15 @@ void WaterSurface::setWind(const WindWaves& wind)
 void WaterSurface::respectrum()
 {
     std::lock_guard<std::mutex> lock(_spectralMaking);
+    _spectralMade = nullptr;
     _spectral = nullptr;
 }
 
 detail::SpectralWaves* WaterSurface::getSpectralWaves() const
 {
     if (_model != WAVES_WIND || !usesGrid()) return nullptr;
+    // asked for on every height query, from any thread: made once, then read without the lock
+    if (detail::SpectralWaves* made = _spectralMade.load(std::memory_order_acquire)) return made;
     std::lock_guard<std::mutex> lock(_spectralMaking);
     if (!_spectral.valid()) {
         WaveCascades::Params p;
@@ -302,6 +306,7 @@ detail::SpectralWaves* WaterSurface::getSpectralWaves() const
         p.extent = _size;
         p.seed = _wind.seed;
         _spectral = new detail::SpectralWaves(p);
+        _spectralMade.store(_spectral.get(), std::memory_order_release);
     }
     return _spectral.get();
 }
@@ -458,17 +463,28 @@ bool WaterSurface::intersect(const osg::Vec3d& start, const osg::Vec3d& end, dou
         s1 = std::min(s1, tb);
         if (s0 > s1) return false;
     }
-    // signed height above the surface along the segment, and its rate of change dz - grad h . dxy
-    auto above = [&](double s) {
-        const osg::Vec3d p = start + d * s;
-        return p.z() - (usesGrid() ? height(p.x(), p.y(), t) : _level);
-    };
     const detail::SpectralWaves* wind = getSpectralWaves();
     const bool waves = usesGrid() && (wind ? wind->heightBound() > 0.0 : !_waves.empty());
-    auto rise = [&](double s) {
-        if (!waves) return d.z();
-        const osg::Vec3d p = start + d * s, n = this->normal(p.x(), p.y(), t);
-        return d.z() + (n.x() * d.x() + n.y() * d.y()) / std::max(n.z(), 1e-12);
+    const double maxSlope = waves ? getMaxSlope() : 0.0;
+    // the wind's cascades at t, held for the whole march: one lock, not one a sample (nothing
+    // below asks the waves through height() or normal() while it is held)
+    std::optional<detail::SpectralWaves::Sampler> windAt;
+    if (wind) windAt.emplace(wind->at(t));
+    // the signed height above the surface at s along the segment, f, and its rate of change
+    // dz - grad h . dxy: one sample of the wind's cascades gives both
+    struct Above { double f, rise; };
+    auto above = [&](double s, bool withRise) {
+        const osg::Vec3d p = start + d * s;
+        if (!usesGrid() || !isPlace(p.x(), p.y())) return Above{ p.z() - _level, d.z() };
+        if (windAt) {
+            osg::Vec2d slope;
+            const double h = windAt->heightAndSlope(p.x(), p.y(), slope);
+            return Above{ p.z() - _level - h, d.z() - (slope.x() * d.x() + slope.y() * d.y()) };
+        }
+        const double f = p.z() - height(p.x(), p.y(), t);
+        if (!withRise || !waves) return Above{ f, d.z() };
+        const osg::Vec3d n = this->normal(p.x(), p.y(), t);
+        return Above{ f, d.z() + (n.x() * d.x() + n.y() * d.y()) / std::max(n.z(), 1e-12) };
     };
     // |d2h/du2| along any horizontal unit u: at most sum a k^2 for the waves; the wind's bound
     double curvature = 0.0;
@@ -482,39 +498,45 @@ bool WaterSurface::intersect(const osg::Vec3d& start, const osg::Vec3d& end, dou
     // g + g' x - c x^2 / 2, positive for x < 2 g / (sqrt(g'^2 + 2 c g) - g'). A ray that clips a
     // crest over a few millimetres meets it. One that touches a crest exactly is approached in ever
     // shorter steps, so none is shorter than 1e-5 of the segment (1e5 steps at most).
-    const double rate = std::fabs(d.z()) + (waves ? getMaxSlope() : 0.0) * dxy;
+    const double rate = std::fabs(d.z()) + maxSlope * dxy;
     const double bend = curvature * dxy * dxy;
     const double minStep = (s1 - s0) * 1.0e-5;
-    auto safeStep = [&](double s, double f) {
-        const double g = std::fabs(f), dg = f > 0.0 ? rise(s) : -rise(s);
+    auto safeStep = [&](const Above& a) {
+        const double g = std::fabs(a.f), dg = a.f > 0.0 ? a.rise : -a.rise;
         const double away = std::sqrt(dg * dg + 2.0 * bend * g) - dg;
         const double bent = away > 0.0 ? 2.0 * g / away : 1e30;
         return std::max(minStep, 0.999 * std::max(rate > 0.0 ? g / rate : 1e30, bent));
     };
     // the first sign change between samples, then bisection (lo keeps the start's side)
-    double sa = s0, fa = above(s0);
-    bool found = fa == 0.0;
+    double sa = s0;
+    Above here = above(s0, true);
+    const bool startAbove = here.f > 0.0; // the side every sample keeps until the crossing
+    bool found = here.f == 0.0;
     ratio = s0;
     while (!found && sa < s1) {
-        const double sb = std::min(s1, sa + safeStep(sa, fa));
+        const double sb = std::min(s1, sa + safeStep(here));
         if (!(sb > sa)) break; // a step below the precision of s: nothing left to sample
-        const double fb = above(sb);
-        if ((fb > 0.0) != (fa > 0.0) || fb == 0.0) {
+        const Above next = above(sb, true);
+        if ((next.f > 0.0) != startAbove || next.f == 0.0) {
+            // halved until no double lies between the two ends (further halving changes nothing)
             double lo = sa, hi = sb;
             for (int k = 0; k < 80; ++k) {
                 const double sm = 0.5 * (lo + hi);
-                if ((above(sm) > 0.0) == (fa > 0.0)) lo = sm;
+                if (!(sm > lo && sm < hi)) break;
+                if ((above(sm, false).f > 0.0) == startAbove) lo = sm;
                 else hi = sm;
             }
             ratio = 0.5 * (lo + hi);
             found = true;
         }
         sa = sb;
-        fa = fb;
+        here = next;
     }
     if (!found) return false;
     point = start + d * ratio;
-    normal = usesGrid() ? this->normal(point.x(), point.y(), t) : osg::Vec3d(0.0, 0.0, 1.0);
+    normal = osg::Vec3d(0.0, 0.0, 1.0);
+    if (usesGrid() && windAt && isPlace(point.x(), point.y())) normal = windAt->normal(point.x(), point.y());
+    else if (usesGrid() && !windAt) normal = this->normal(point.x(), point.y(), t);
     return true;
 }
 

@@ -338,8 +338,11 @@ WaveCascades::Texel WaveCascades::sample(double x, double y) const
         const double fx = x / c.band.tile * n, fy = y / c.band.tile * n;
         const double ix = std::floor(fx), iy = std::floor(fy);
         const float wx = float(fx - ix), wy = float(fy - iy);
-        const long long x0 = (static_cast<long long>(ix) % n + n) % n, y0 = (static_cast<long long>(iy) % n + n) % n;
-        const long long x1 = (x0 + 1) % n, y1 = (y0 + 1) % n;
+        // n is a power of two: the tile wraps by a mask (two's complement wraps negatives too),
+        // not by divisions, which cost more than the rest of a cascade's sample
+        const long long mask = n - 1;
+        const long long x0 = static_cast<long long>(ix) & mask, y0 = static_cast<long long>(iy) & mask;
+        const long long x1 = (x0 + 1) & mask, y1 = (y0 + 1) & mask;
         const Texel& a = c.texels[y0 * n + x0];
         const Texel& b = c.texels[y0 * n + x1];
         const Texel& d = c.texels[y1 * n + x0];
@@ -386,13 +389,25 @@ WaveCascades::Texel WaveCascades::over(double x, double y) const
 {
     double qx = x, qy = y;
     Texel s = sample(qx, qy);
-    for (int i = 0; i < 32 && _params.choppiness != 0.0; ++i) {
-        const double nx = x - s.displacement.x(), ny = y - s.displacement.y();
-        const bool settled = std::fabs(nx - qx) + std::fabs(ny - qy) < 1e-7;
-        qx = nx;
-        qy = ny;
+    if (_params.choppiness == 0.0) return s;
+    // the undisplaced point q whose displaced place q + D(q) is (x, y): Newton's steps on the
+    // residual r = q + D(q) - (x, y) with the sampled Jacobian J = I + grad D (symmetric), three or
+    // four samples where the plain fixed point q = (x, y) - D(q) took a dozen; where the crests
+    // squeeze J towards singular, the fixed point's step, which the bound on the stretch keeps
+    // contracting
+    for (int i = 0; i < 32; ++i) {
+        const double rx = qx + s.displacement.x() - x, ry = qy + s.displacement.y() - y;
+        if (std::fabs(rx) + std::fabs(ry) < 1e-7) break;
+        const double xx = 1.0 + s.jacobian.x(), yy = 1.0 + s.jacobian.y(), xy = s.jacobian.z();
+        const double det = xx * yy - xy * xy;
+        if (det > 0.5) {
+            qx -= (yy * rx - xy * ry) / det;
+            qy -= (xx * ry - xy * rx) / det;
+        } else {
+            qx -= rx;
+            qy -= ry;
+        }
         s = sample(qx, qy);
-        if (settled) break;
     }
     return s;
 }

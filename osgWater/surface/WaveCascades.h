@@ -96,8 +96,10 @@ public:
     //! repeating texture is (texel centres at (i + 1/2) tile / size, plus half a texel: the FFT's
     //! sample i lies at i tile / size).
     Texel sample(double x, double y) const;
-    //! The height of the displaced surface over (x, y): the undisplaced point whose displacement
-    //! lands there is found by fixed-point iteration, then its height is taken.
+    //! The sample at the undisplaced point whose displacement lands on (x, y), found by Newton's
+    //! steps (x, y finite): its height and displacedSlope() are the displaced surface's over (x, y).
+    Texel over(double x, double y) const;
+    //! The height of the displaced surface over (x, y): over(x, y)'s.
     double height(double x, double y) const;
     //! The unit normal of the displaced surface over (x, y): its tangents' cross product there.
     osg::Vec3d normal(double x, double y) const;
@@ -138,8 +140,6 @@ private:
         std::vector<Texel> texels;
     };
     void evaluate(Cascade& c, double t);
-    //! The sample at the undisplaced point whose displacement lands on (x, y) (fixed-point iteration).
-    Texel over(double x, double y) const;
 
     Params _params;
     std::vector<CascadeBand> _bands;
