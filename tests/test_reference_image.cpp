@@ -441,6 +441,33 @@ TEST(ReferenceRenderer, ARaySentBackUnderTheLevelIsFollowed)
     EXPECT_LT(worstAtTheLimit, 1e-9);
 }
 
+// An eye a hair above the water sees it at once: its rays meet the water micrometres away, and
+// none may start past that (a ray's start is pushed along it only where it leaves a surface it
+// met). Over flat water whose body shows nothing (black, opaque), a ray 20 degrees down from eyes
+// 42 m from the origin, from 1 um to 1 m above the level, carries F of the sky's light, F exact
+// Fresnel at 70 degrees. Started 1e-6 of the distance from the origin along (42 um), the ray from
+// 1 um was already under the level and saw the sky whole.
+TEST(ReferenceRenderer, AnEyeAMicrometreAboveTheWaterSeesItsSurface)
+{
+    osg::ref_ptr<osgWater::WaterNode> water = new osgWater::WaterNode;
+    water->getSurface()->setWaves({});
+    water->getSurface()->setSize(400.0f);
+    ImageSetup setup = imageSetup(*water, kClear);
+    setup.body = glm::dvec3(0.0);
+    setup.extinction = glm::dvec3(1e3);
+    const glm::dvec3 sky(0.2, 0.5, 1.0);
+    setup.sky = [sky](const glm::dvec3&) { return sky; };
+    ReferenceScene rs(*water, setup);
+    const double n1 = water->getSettings()->getAirIOR(), n2 = water->getSettings()->getWaterIOR();
+    const glm::dvec3 d = glm::normalize(glm::dvec3(0.0, std::cos(osg::DegreesToRadians(20.0)), -std::sin(osg::DegreesToRadians(20.0))));
+    const glm::dvec3 expected = fresnelExact(-d.z, n1, n2) * sky;
+    for (double height : { 1e-6, 1e-3, 1.0 }) {
+        const glm::dvec3 got = rs.renderer->radiance(glm::dvec3(30.0, -30.0, height), d, false);
+        EXPECT_LT(glm::length(got - expected) / glm::length(expected), 1e-9)
+            << height << " m above: got (" << got.x << ", " << got.y << ", " << got.z << ")";
+    }
+}
+
 // A sky under the water node is the light of the rays that meet nothing, not a triangle of the
 // scene: the reference collects the quad's two triangles alone, and a ray up into the sky carries
 // the sky's own radiance (without a sky, the clear colour decoded)

@@ -54,7 +54,9 @@ glm::dvec3 ReferenceRenderer::radiance(const glm::dvec3& org, const glm::dvec3& 
 
 glm::dvec3 ReferenceRenderer::follow(const glm::dvec3& org, const glm::dvec3& dir, bool inWater, int waterHits) const
 {
-    const double eps = 1e-6 * (1.0 + glm::length(org));
+    // a ray that leaves a surface it met starts a little along, clear of that surface; the eye's
+    // own rays start at the eye (one a hair above the water meets it micrometres away)
+    const double eps = waterHits == 0 ? 0.0 : 1e-6 * (1.0 + glm::length(org));
     const Hit w = waterHits < _setup.maxWaterHits ? _ref.water().intersect(org, dir, eps) : Hit{};
     const Hit s = _ref.scene().intersect(org, dir, eps, w.hit ? w.t : 1e30);
     glm::dvec3 c;
