@@ -252,6 +252,18 @@ glm::dvec3 linear(const osg::Vec4& displayColour)
 
 const osg::Vec4 kClear(0.45f, 0.6f, 0.85f, 1.0f);
 
+// Water whose body shows nothing of what lies below (black, opaque) under a sky of one colour,
+// `skyLight`, 400 m wide: a ray's light is what the water's Fresnel passes on of the sky
+ImageSetup blackWaterUnderSky(osgWater::WaterNode& water, const glm::dvec3& skyLight)
+{
+    water.getSurface()->setSize(400.0f);
+    ImageSetup setup = imageSetup(water, kClear);
+    setup.body = glm::dvec3(0.0);
+    setup.extinction = glm::dvec3(1e3);
+    setup.sky = [skyLight](const glm::dvec3&) { return skyLight; };
+    return setup;
+}
+
 }
 
 // Flat water over a checkerboard 2 m down (its texels by the nearest, as the GPU magnifies them):
@@ -380,12 +392,8 @@ TEST(ReferenceRenderer, ARaySentBackUnderTheLevelIsFollowed)
     osg::ref_ptr<osgWater::WaterNode> water = new osgWater::WaterNode;
     osgWater::WaterSurface* surface = water->getSurface();
     surface->setWaves({ makeWave(0.0f, 1.0f, 3.0f, 0.35f) }); // slopes up to 0.73
-    surface->setSize(400.0f);
-    ImageSetup setup = imageSetup(*water, kClear);
-    setup.body = glm::dvec3(0.0);
-    setup.extinction = glm::dvec3(1e3);
     const glm::dvec3 sky(0.2, 0.5, 1.0);
-    setup.sky = [sky](const glm::dvec3&) { return sky; };
+    const ImageSetup setup = blackWaterUnderSky(*water, sky);
     ReferenceScene rs(*water, setup);
     ImageSetup oneHit = setup;
     oneHit.maxWaterHits = 1;
@@ -451,13 +459,8 @@ TEST(ReferenceRenderer, AnEyeAMicrometreAboveTheWaterSeesItsSurface)
 {
     osg::ref_ptr<osgWater::WaterNode> water = new osgWater::WaterNode;
     water->getSurface()->setWaves({});
-    water->getSurface()->setSize(400.0f);
-    ImageSetup setup = imageSetup(*water, kClear);
-    setup.body = glm::dvec3(0.0);
-    setup.extinction = glm::dvec3(1e3);
     const glm::dvec3 sky(0.2, 0.5, 1.0);
-    setup.sky = [sky](const glm::dvec3&) { return sky; };
-    ReferenceScene rs(*water, setup);
+    ReferenceScene rs(*water, blackWaterUnderSky(*water, sky));
     const double n1 = water->getSettings()->getAirIOR(), n2 = water->getSettings()->getWaterIOR();
     const glm::dvec3 d = glm::normalize(glm::dvec3(0.0, std::cos(osg::DegreesToRadians(20.0)), -std::sin(osg::DegreesToRadians(20.0))));
     const glm::dvec3 expected = fresnelExact(-d.z, n1, n2) * sky;
