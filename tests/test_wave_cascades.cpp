@@ -119,6 +119,46 @@ TEST(WaveCascades, TheSlopesHeldAndTheRoughnessMakeCoxMunksTotal)
         }
 }
 
+// What the bilinear interpolation between texels hides of the slopes (the shaders' roughness under a
+// texel, and the reference's facets): nothing at a texel's own sample, and over the water, beside the
+// interpolated slopes' own variance, exactly what the texels hold: the mean over points of
+// |interpolated slope|^2 + the hidden variance is the texels' mean |slope|^2 (the cascades'
+// interpolated slopes are uncorrelated, so the sum over cascades holds too)
+TEST(WaveCascades, WhatTheInterpolationHidesMakesUpTheTexelsSlopes)
+{
+    WaveCascades w(lakeBreeze());
+    w.update(3.0);
+    double texels = 0.0;
+    for (unsigned int c = 0; c < w.bands().size(); ++c) {
+        if (!w.holdsWaves(c)) continue;
+        double sum = 0.0;
+        for (const WaveCascades::Texel& t : w.texels(c)) sum += double(t.slope.length2());
+        texels += sum / w.texels(c).size();
+    }
+    ASSERT_GT(texels, 0.0);
+    // at a sample of the finest cascade's texels, its own share is 0 (the others' is not)
+    const unsigned int finest = unsigned(w.bands().size()) - 1;
+    const double texel = w.bands()[finest].tile / w.params().size;
+    EXPECT_EQ(w.subTexelSlopeVariance(0.0, 0.0), 0.0) << "every cascade's texel (0, 0) is sampled there";
+    EXPECT_GT(w.subTexelSlopeVariance(0.5 * texel, 0.5 * texel), 0.0);
+    std::mt19937 engine(11);
+    std::uniform_real_distribution<double> place(-70.0, 70.0);
+    double shown = 0.0, hidden = 0.0;
+    const int n = 200000;
+    for (int i = 0; i < n; ++i) {
+        const double x = place(engine), y = place(engine);
+        shown += double(w.sample(x, y).slope.length2());
+        const double v = w.subTexelSlopeVariance(x, y);
+        ASSERT_GE(v, 0.0);
+        hidden += v;
+    }
+    shown /= n;
+    hidden /= n;
+    std::cout << "texels' slopes " << texels << ": interpolated " << shown << " + hidden " << hidden << "\n";
+    EXPECT_GT(hidden, 0.05 * texels) << "the finest waves are a texel or two long: interpolation hides a share of them";
+    EXPECT_NEAR(shown + hidden, texels, 0.02 * texels);
+}
+
 TEST(WaveCascades, EveryTexelIsTheDirectSumOverItsCascadesBins)
 {
     WaveCascades::Params p = freshWind();

@@ -1,5 +1,6 @@
 #include "Reference.h"
 #include <osgWater/WaterSurface>
+#include "surface/SpectralWaves.h"
 #include <glm/geometric.hpp>
 #include <glm/mat2x2.hpp>
 #include <algorithm>
@@ -47,6 +48,12 @@ glm::dvec3 Reference::normalAt(const Hit& h) const
         return glm::normalize(glm::dvec3(n.x(), n.y(), n.z()));
     }
     return h.normal.z < 0.0 ? -h.normal : h.normal;
+}
+
+double Reference::roughnessAt(const Hit& h) const
+{
+    const osgWater::detail::SpectralWaves* wind = _surface.usesGrid() ? _surface.getSpectralWaves() : nullptr;
+    return wind ? wind->at(_t).roughness(h.point.x, h.point.y) : 0.0;
 }
 
 Hit Reference::waterFirst(const glm::dvec3& eye, const glm::dvec3& dir) const

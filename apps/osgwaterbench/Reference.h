@@ -60,6 +60,10 @@ public:
     const Media& media() const { return _media; }
     //! The water's unit normal at a hit of water(), facing up (over the waves the analytic one).
     glm::dvec3 normalAt(const Hit& h) const;
+    //! The slopes' variance at a hit of water() that normalAt does not show: the wind's
+    //! (SpectralWaves::Sampler::roughness, what the kit shades as roughness for a footprint under a
+    //! texel); 0 for the sum of waves or a user's mesh, whose normals are all there is.
+    double roughnessAt(const Hit& h) const;
     //! Where the reflection pass shows the mirror ray of the ray eye + s dir: the unit direction from
     //! the eye mirrored in the level to the mirror ray's hit, or the ray's own direction where it
     //! meets nothing (the pass's camera sits at the mirrored eye). False where the ray does not meet

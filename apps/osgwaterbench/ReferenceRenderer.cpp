@@ -5,6 +5,7 @@
 #include <glm/geometric.hpp>
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 namespace bench {
 
@@ -19,6 +20,54 @@ glm::dvec3 throughWater(const glm::dvec3& c, double length, const ImageSetup& s)
     return s.body + a * (c - s.body);
 }
 
+// splitmix64's finaliser: the seed's bits spread over all 64
+std::uint64_t mix(std::uint64_t z)
+{
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+    return z ^ (z >> 31);
+}
+
+// a ray's own bits and how many water meetings came before on its path, as one seed
+std::uint64_t raySeed(const glm::dvec3& org, const glm::dvec3& dir, int waterHits)
+{
+    std::uint64_t h = mix(std::uint64_t(waterHits) + 0x9e3779b97f4a7c15ull);
+    for (double v : { org.x, org.y, org.z, dir.x, dir.y, dir.z }) {
+        std::uint64_t bits;
+        std::memcpy(&bits, &v, sizeof bits);
+        h = mix(h ^ bits);
+    }
+    return h;
+}
+
+}
+
+glm::dvec3 subgridNormal(const glm::dvec3& N, double variance, std::uint64_t seed)
+{
+    if (!(variance > 0.0) || !(N.z > 1e-9)) return N;
+    // two uniforms in (0, 1) from the seed's halves, then Box-Muller
+    const double u1 = (double(mix(seed) >> 11) + 0.5) * 0x1.0p-53, u2 = (double(mix(~seed) >> 11) + 0.5) * 0x1.0p-53;
+    const double r = std::sqrt(-2.0 * std::log(u1)) * std::sqrt(0.5 * variance), a = 6.283185307179586 * u2;
+    const glm::dvec2 slope = -glm::dvec2(N.x, N.y) / N.z + r * glm::dvec2(std::cos(a), std::sin(a));
+    return glm::normalize(glm::dvec3(-slope.x, -slope.y, 1.0));
+}
+
+FacetDraw drawFacet(const glm::dvec3& waves, double variance, const glm::dvec3& dir, std::uint64_t seed)
+{
+    if (!(variance > 0.0) || !(waves.z > 1e-9)) return { waves, 1.0 };
+    const glm::dvec3 N = subgridNormal(waves, variance, seed);
+    // the area a facet of slopes s shows the ray per unit area of the level, dir . (s, -1) from above
+    // (the other way from below): linear in s, so over the draws a Gaussian of the mean slopes' value
+    // and sigma |dir.xy| sqrt(variance / 2), of which a facet turned away (below 0) shows nothing
+    const double side = glm::dot(waves, dir) < 0.0 ? 1.0 : -1.0;
+    auto shown = [&](const glm::dvec3& n) { return -side * glm::dot(dir, n / n.z); };
+    const double mean = shown(waves), sigma = glm::length(glm::dvec2(dir.x, dir.y)) * std::sqrt(0.5 * variance);
+    double expected = std::max(mean, 0.0);
+    if (sigma > 0.0) { // E[max(X, 0)] for X ~ N(mean, sigma^2)
+        const double z = mean / sigma;
+        expected = mean * 0.5 * std::erfc(-z / std::sqrt(2.0)) + sigma * std::exp(-0.5 * z * z) / std::sqrt(2.0 * M_PI);
+    }
+    return { N, expected > 0.0 ? std::max(shown(N), 0.0) / expected : 0.0 };
 }
 
 ImageSetup imageSetup(const osgWater::WaterNode& water, const osg::Vec4& clearColour)
@@ -67,12 +116,21 @@ glm::dvec3 ReferenceRenderer::follow(const glm::dvec3& org, const glm::dvec3& di
     } else if (w.hit) {
         const Media& m = _ref.media();
         const double n1 = inWater ? m.water : m.air, n2 = inWater ? m.air : m.water;
-        glm::dvec3 N = _ref.normalAt(w);
-        if (glm::dot(N, dir) > 0.0) N = -N; // facing the ray, whichever side it comes from
+        // the met facet: the waves' normal tilted by a slope drawn from the roughness there, its
+        // light weighted by the area it shows the ray (Reference's facetDraw)
+        const glm::dvec3 waves = _ref.normalAt(w);
+        const bool fromAbove = glm::dot(waves, dir) < 0.0;
+        const FacetDraw facet = drawFacet(waves, _ref.roughnessAt(w), dir, raySeed(org, dir, waterHits));
+        glm::dvec3 N = facet.normal;
+        if (!fromAbove) N = -N; // facing the ray, whichever side it comes from
         const double F = fresnelExact(-glm::dot(dir, N), n1, n2);
-        c = F * follow(w.point, glm::reflect(dir, N), inWater, waterHits + 1);
-        glm::dvec3 R;
-        if (F < 1.0 && snell(dir, N, n1, n2, R)) c += (1.0 - F) * follow(w.point, R, !inWater, waterHits + 1);
+        c = glm::dvec3(0.0);
+        if (facet.weight > 0.0) {
+            c = F * follow(w.point, glm::reflect(dir, N), inWater, waterHits + 1);
+            glm::dvec3 R;
+            if (F < 1.0 && snell(dir, N, n1, n2, R)) c += (1.0 - F) * follow(w.point, R, !inWater, waterHits + 1);
+            c *= facet.weight;
+        }
         length = w.t;
     } else {
         if (!inWater) return _setup.sky(dir);

@@ -1,6 +1,10 @@
 // The image a view should show, by Whitted ray tracing with the kit's shading model, on the exact
 // machinery of the reference (the waves in double precision, Embree over the scene's triangles):
-// - at the water, the ray splits by exact unpolarised Fresnel into its mirror ray and Snell's
+// - at the water, the facet the ray meets is the waves' normal tilted by a slope drawn from the
+//   roughness there (Reference::roughnessAt: what the kit shades as roughness at a point, the slopes
+//   the interpolation between the wind's texels and its cascades do not show; 0 for the sum of
+//   waves), so that many rays a pixel see the spread the kit's shading integrates;
+// - there the ray splits by exact unpolarised Fresnel into its mirror ray and Snell's
 //   refracted ray (none under total internal reflection), each followed on, through further
 //   meetings with the water, up to a limit of water hits per path (past it the ray goes on as if
 //   the water were not there);
@@ -17,6 +21,7 @@
 #include "Reference.h"
 #include "SceneShading.h"
 #include <osg/Vec4>
+#include <cstdint>
 #include <functional>
 #include <vector>
 
@@ -38,6 +43,24 @@ struct ImageSetup {
     int refineSamplesPerAxis = 0;
     double refineAbove = 0.01;
 };
+
+//! The normal of a facet whose slopes are those of the unit upward normal `N` plus a draw from an
+//! isotropic Gaussian of total variance `variance` (each axis half of it): the slopes the waves'
+//! normal does not show at a point (Reference::roughnessAt). The draw is a function of `seed` alone
+//! (a ray's own bits: the image does not depend on which thread traced it). N itself where variance
+//! is 0 or N is not upward.
+glm::dvec3 subgridNormal(const glm::dvec3& N, double variance, std::uint64_t seed);
+
+//! A facet a ray meets where the waves' unit upward normal is `waves` and the slopes below it have
+//! `variance`: its normal (subgridNormal) and the weight of its light, the area it shows the ray over
+//! the mean such area (0 for a facet turned away from the ray). The weighted mean over many draws is
+//! the mean over the facets as the ray sees them, each by its seen area: what the kit's shading
+//! integrates (owFresnelAndLean). Weight 1 and `waves` without roughness.
+struct FacetDraw {
+    glm::dvec3 normal;
+    double weight;
+};
+FacetDraw drawFacet(const glm::dvec3& waves, double variance, const glm::dvec3& dir, std::uint64_t seed);
 
 //! What render can say besides the image.
 struct RenderExtras {

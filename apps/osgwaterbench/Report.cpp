@@ -266,7 +266,7 @@ bool writeDocs(const std::string& dir, const RunInfo& info, const std::vector<Re
        << "- Reference: the eye rays against the analytic waves at the view's time (double precision), then Embree "
        << "ray casting over the scene's triangles; caustics by "
        << info.photons << " photons traced from the sun; the reference image by Whitted ray tracing on the same "
-       << "machinery, " << info.referenceSamples << " × " << info.referenceSamples << " rays a pixel"
+       << "machinery (the facets under the wind's roughness drawn per ray), " << info.referenceSamples << " × " << info.referenceSamples << " rays a pixel"
        << (info.referenceRefine > 0 ? " and " + std::to_string(info.referenceRefine) + " × " + std::to_string(info.referenceRefine) +
                                           " more where its two halves disagree by over 1%"
                                     : std::string())

@@ -46,6 +46,14 @@ public:
             return s.displacement.z();
         }
 
+        //! The slopes' variance over (x, y) its normal does not show: what the interpolation between
+        //! texels averages away and what no cascade holds. The shaders' roughness for a footprint
+        //! under a texel (a ray's).
+        double roughness(double x, double y) const
+        {
+            return _cascades.subTexelSlopeVariance(x, y) + _cascades.unresolvedSlopeVariance();
+        }
+
     private:
         friend class SpectralWaves;
         Sampler(const WaveCascades& cascades, std::shared_lock<std::shared_mutex> shared,

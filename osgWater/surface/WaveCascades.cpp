@@ -329,31 +329,57 @@ void WaveCascades::evaluate(Cascade& c, double t)
     }
 }
 
+WaveCascades::Corners WaveCascades::corners(const Cascade& c, double x, double y) const
+{
+    const unsigned int n = _params.size;
+    const double fx = x / c.band.tile * n, fy = y / c.band.tile * n;
+    const double ix = std::floor(fx), iy = std::floor(fy);
+    const float wx = float(fx - ix), wy = float(fy - iy);
+    // n is a power of two: the tile wraps by a mask (two's complement wraps negatives too),
+    // not by divisions, which cost more than the rest of a cascade's sample
+    const long long mask = n - 1;
+    const long long x0 = static_cast<long long>(ix) & mask, y0 = static_cast<long long>(iy) & mask;
+    const long long x1 = (x0 + 1) & mask, y1 = (y0 + 1) & mask;
+    return Corners{ { &c.texels[y0 * n + x0], &c.texels[y0 * n + x1], &c.texels[y1 * n + x0], &c.texels[y1 * n + x1] },
+                    { (1 - wx) * (1 - wy), wx * (1 - wy), (1 - wx) * wy, wx * wy } };
+}
+
 WaveCascades::Texel WaveCascades::sample(double x, double y) const
 {
     Texel sum;
-    const unsigned int n = _params.size;
     for (const Cascade& c : _cascades) {
         if (c.bins.empty()) continue;
-        const double fx = x / c.band.tile * n, fy = y / c.band.tile * n;
-        const double ix = std::floor(fx), iy = std::floor(fy);
-        const float wx = float(fx - ix), wy = float(fy - iy);
-        // n is a power of two: the tile wraps by a mask (two's complement wraps negatives too),
-        // not by divisions, which cost more than the rest of a cascade's sample
-        const long long mask = n - 1;
-        const long long x0 = static_cast<long long>(ix) & mask, y0 = static_cast<long long>(iy) & mask;
-        const long long x1 = (x0 + 1) & mask, y1 = (y0 + 1) & mask;
-        const Texel& a = c.texels[y0 * n + x0];
-        const Texel& b = c.texels[y0 * n + x1];
-        const Texel& d = c.texels[y1 * n + x0];
-        const Texel& e = c.texels[y1 * n + x1];
-        sum.displacement += (a.displacement * (1 - wx) + b.displacement * wx) * (1 - wy)
-                            + (d.displacement * (1 - wx) + e.displacement * wx) * wy;
-        sum.slope += (a.slope * (1 - wx) + b.slope * wx) * (1 - wy) + (d.slope * (1 - wx) + e.slope * wx) * wy;
-        if (_params.choppiness != 0.0) // else zero: the height query's hot path skips it
-            sum.jacobian += (a.jacobian * (1 - wx) + b.jacobian * wx) * (1 - wy) + (d.jacobian * (1 - wx) + e.jacobian * wx) * wy;
+        const Corners q = corners(c, x, y);
+        for (int i = 0; i < 4; ++i) {
+            const Texel& t = *q.texel[i];
+            const float w = q.weight[i];
+            sum.displacement += t.displacement * w;
+            sum.slope += t.slope * w;
+            if (_params.choppiness != 0.0) sum.jacobian += t.jacobian * w; // else zero: the height query's hot path skips it
+        }
     }
     return sum;
+}
+
+double WaveCascades::subTexelSlopeVariance(double x, double y) const
+{
+    if (!std::isfinite(x) || !std::isfinite(y)) return 0.0;
+    osg::Vec2d source;
+    over(x, y, &source);
+    double v = 0.0;
+    for (const Cascade& c : _cascades) {
+        if (c.bins.empty()) continue;
+        const Corners q = corners(c, source.x(), source.y());
+        osg::Vec2d mean;
+        double meanSquare = 0.0;
+        for (int i = 0; i < 4; ++i) {
+            const osg::Vec2d s(q.texel[i]->slope.x(), q.texel[i]->slope.y());
+            mean += s * q.weight[i];
+            meanSquare += s.length2() * q.weight[i];
+        }
+        v += std::max(meanSquare - mean.length2(), 0.0);
+    }
+    return v;
 }
 
 WaveCascades::Texel WaveCascades::directSum(double x, double y, int only) const
@@ -385,10 +411,11 @@ WaveCascades::Texel WaveCascades::directSum(double x, double y, int only) const
     return t;
 }
 
-WaveCascades::Texel WaveCascades::over(double x, double y) const
+WaveCascades::Texel WaveCascades::over(double x, double y, osg::Vec2d* source) const
 {
     double qx = x, qy = y;
     Texel s = sample(qx, qy);
+    if (source) source->set(qx, qy);
     if (_params.choppiness == 0.0) return s;
     // the undisplaced point q whose displaced place q + D(q) is (x, y): Newton's steps on the
     // residual r = q + D(q) - (x, y) with the sampled Jacobian J = I + grad D (symmetric), three or
@@ -409,6 +436,7 @@ WaveCascades::Texel WaveCascades::over(double x, double y) const
         }
         s = sample(qx, qy);
     }
+    if (source) source->set(qx, qy);
     return s;
 }
 

@@ -98,7 +98,14 @@ public:
     Texel sample(double x, double y) const;
     //! The sample at the undisplaced point whose displacement lands on (x, y), found by Newton's
     //! steps (x, y finite): its height and displacedSlope() are the displaced surface's over (x, y).
-    Texel over(double x, double y) const;
+    Texel over(double x, double y) const { return over(x, y, nullptr); }
+    //! The same, and that undisplaced point (`source`).
+    Texel over(double x, double y, osg::Vec2d* source) const;
+    //! The slopes' variance over (x, y) that the bilinear interpolation between texels does not
+    //! show: per cascade, the interpolated |slope|^2 less the square of the interpolated slope, at
+    //! the point over() reads. What the shaders' roughness is for a footprint under a texel
+    //! (waves.glsl, the level-0 read), beside unresolvedSlopeVariance(); 0 at a texel's sample.
+    double subTexelSlopeVariance(double x, double y) const;
     //! The height of the displaced surface over (x, y): over(x, y)'s.
     double height(double x, double y) const;
     //! The unit normal of the displaced surface over (x, y): its tangents' cross product there.
@@ -139,6 +146,12 @@ private:
         std::vector<Bin> bins;
         std::vector<Texel> texels;
     };
+    //! The four texels of cascade c around (x, y) and their bilinear weights (sample()'s).
+    struct Corners {
+        const Texel* texel[4];
+        float weight[4];
+    };
+    Corners corners(const Cascade& c, double x, double y) const;
     void evaluate(Cascade& c, double t);
 
     Params _params;
