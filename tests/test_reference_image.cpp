@@ -685,10 +685,10 @@ TEST(ReferenceCaustics, TheSunUnderTheWaterIsThePhotonsTexelsAlongTheRefractedPa
     EXPECT_LT(glm::length(shading.shade(mesh, atP, down, light) - unlit), 1e-12);
 }
 
-// The reference's facets under the roughness (drawFacet): weighted by the area each shows the ray,
-// their Fresnel is the kit's Fresnel over the hidden slopes (optics::fresnelOverSlopes, exact model),
-// from overhead to grazing; the weights average 1; a seed draws one facet; no roughness, the waves'
-// own normal
+// The reference's facets under the roughness (drawFacet): drawn in proportion to the area each shows
+// the ray, they all face it and their Fresnel is the kit's Fresnel over the hidden slopes
+// (optics::fresnelOverSlopes, exact model), from overhead to grazing; a seed draws one facet; no
+// roughness, the waves' own normal
 TEST(ReferenceRenderer, FacetsDrawnFromTheRoughnessGiveTheKitsFresnelOverSlopes)
 {
     const double roughness = 0.02, n1 = 1.0, n2 = 1.333;

@@ -55,19 +55,22 @@ glm::dvec3 subgridNormal(const glm::dvec3& N, double variance, std::uint64_t see
 FacetDraw drawFacet(const glm::dvec3& waves, double variance, const glm::dvec3& dir, std::uint64_t seed)
 {
     if (!(variance > 0.0) || !(waves.z > 1e-9)) return { waves, 1.0 };
-    const glm::dvec3 N = subgridNormal(waves, variance, seed);
     // the area a facet of slopes s shows the ray per unit area of the level, dir . (s, -1) from above
     // (the other way from below): linear in s, so over the draws a Gaussian of the mean slopes' value
-    // and sigma |dir.xy| sqrt(variance / 2), of which a facet turned away (below 0) shows nothing
+    // and sigma |dir.xy| sqrt(variance / 2), of which a facet turned away (below 0) shows nothing.
+    // Facets are kept in proportion to it (rejection, the area bounded at 4 sigma over the mean): a
+    // weight per facet instead left many rays of a grazing pixel with nothing, and the image noisy.
     const double side = glm::dot(waves, dir) < 0.0 ? 1.0 : -1.0;
     auto shown = [&](const glm::dvec3& n) { return -side * glm::dot(dir, n / n.z); };
-    const double mean = shown(waves), sigma = glm::length(glm::dvec2(dir.x, dir.y)) * std::sqrt(0.5 * variance);
-    double expected = std::max(mean, 0.0);
-    if (sigma > 0.0) { // E[max(X, 0)] for X ~ N(mean, sigma^2)
-        const double z = mean / sigma;
-        expected = mean * 0.5 * std::erfc(-z / std::sqrt(2.0)) + sigma * std::exp(-0.5 * z * z) / std::sqrt(2.0 * M_PI);
+    const double bound = shown(waves) + 4.0 * glm::length(glm::dvec2(dir.x, dir.y)) * std::sqrt(0.5 * variance);
+    if (!(bound > 0.0)) return { waves, 0.0 };
+    for (std::uint64_t k = 0; k < 256; ++k) {
+        const std::uint64_t draw = mix(seed + k * 0x9e3779b97f4a7c15ull);
+        const glm::dvec3 N = subgridNormal(waves, variance, draw);
+        const double keep = (double(mix(draw ^ 0x5851f42d4c957f2dull) >> 11) + 0.5) * 0x1.0p-53;
+        if (shown(N) > keep * bound) return { N, 1.0 };
     }
-    return { N, expected > 0.0 ? std::max(shown(N), 0.0) / expected : 0.0 };
+    return { waves, 0.0 }; // a ray this close to the level's plane is not met
 }
 
 ImageSetup imageSetup(const osgWater::WaterNode& water, const osg::Vec4& clearColour)
@@ -116,8 +119,8 @@ glm::dvec3 ReferenceRenderer::follow(const glm::dvec3& org, const glm::dvec3& di
     } else if (w.hit) {
         const Media& m = _ref.media();
         const double n1 = inWater ? m.water : m.air, n2 = inWater ? m.air : m.water;
-        // the met facet: the waves' normal tilted by a slope drawn from the roughness there, its
-        // light weighted by the area it shows the ray (Reference's facetDraw)
+        // the met facet: the waves' normal tilted by a slope drawn from the roughness there, in
+        // proportion to the area it shows the ray (drawFacet)
         const glm::dvec3 waves = _ref.normalAt(w);
         const bool fromAbove = glm::dot(waves, dir) < 0.0;
         const FacetDraw facet = drawFacet(waves, _ref.roughnessAt(w), dir, raySeed(org, dir, waterHits));

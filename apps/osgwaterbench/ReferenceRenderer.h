@@ -52,10 +52,10 @@ struct ImageSetup {
 glm::dvec3 subgridNormal(const glm::dvec3& N, double variance, std::uint64_t seed);
 
 //! A facet a ray meets where the waves' unit upward normal is `waves` and the slopes below it have
-//! `variance`: its normal (subgridNormal) and the weight of its light, the area it shows the ray over
-//! the mean such area (0 for a facet turned away from the ray). The weighted mean over many draws is
-//! the mean over the facets as the ray sees them, each by its seen area: what the kit's shading
-//! integrates (owFresnelAndLean). Weight 1 and `waves` without roughness.
+//! `variance`: its normal (subgridNormal), drawn in proportion to the area it shows the ray (never one
+//! turned away), so that the mean over many draws is the mean over the facets as the ray sees them:
+//! what the kit's shading integrates (owFresnelAndLean). Weight 1 (0 only for a ray that grazes the
+//! level so closely that no facet shows); `waves` itself without roughness.
 struct FacetDraw {
     glm::dvec3 normal;
     double weight;
