@@ -40,8 +40,8 @@ std::uint64_t raySeed(const glm::dvec3& org, const glm::dvec3& dir, int waterHit
     return h;
 }
 
-}
-
+// N's slopes plus a draw of an isotropic Gaussian of total variance `variance` (each axis half),
+// a function of `seed` alone
 glm::dvec3 subgridNormal(const glm::dvec3& N, double variance, std::uint64_t seed)
 {
     if (!(variance > 0.0) || !(N.z > 1e-9)) return N;
@@ -52,9 +52,11 @@ glm::dvec3 subgridNormal(const glm::dvec3& N, double variance, std::uint64_t see
     return glm::normalize(glm::dvec3(-slope.x, -slope.y, 1.0));
 }
 
+}
+
 FacetDraw drawFacet(const glm::dvec3& waves, double variance, const glm::dvec3& dir, std::uint64_t seed)
 {
-    if (!(variance > 0.0) || !(waves.z > 1e-9)) return { waves, 1.0 };
+    if (!(variance > 0.0) || !(waves.z > 1e-9)) return { waves, true };
     // the area a facet of slopes s shows the ray per unit area of the level, dir . (s, -1) from above
     // (the other way from below): linear in s, so over the draws a Gaussian of the mean slopes' value
     // and sigma |dir.xy| sqrt(variance / 2), of which a facet turned away (below 0) shows nothing.
@@ -63,14 +65,14 @@ FacetDraw drawFacet(const glm::dvec3& waves, double variance, const glm::dvec3& 
     const double side = glm::dot(waves, dir) < 0.0 ? 1.0 : -1.0;
     auto shown = [&](const glm::dvec3& n) { return -side * glm::dot(dir, n / n.z); };
     const double bound = shown(waves) + 4.0 * glm::length(glm::dvec2(dir.x, dir.y)) * std::sqrt(0.5 * variance);
-    if (!(bound > 0.0)) return { waves, 0.0 };
+    if (!(bound > 0.0)) return { waves, false };
     for (std::uint64_t k = 0; k < 256; ++k) {
         const std::uint64_t draw = mix(seed + k * 0x9e3779b97f4a7c15ull);
         const glm::dvec3 N = subgridNormal(waves, variance, draw);
         const double keep = (double(mix(draw ^ 0x5851f42d4c957f2dull) >> 11) + 0.5) * 0x1.0p-53;
-        if (shown(N) > keep * bound) return { N, 1.0 };
+        if (shown(N) > keep * bound) return { N, true };
     }
-    return { waves, 0.0 }; // a ray this close to the level's plane is not met
+    return { waves, false }; // a ray this close to the level's plane is not met
 }
 
 ImageSetup imageSetup(const osgWater::WaterNode& water, const osg::Vec4& clearColour)
@@ -128,11 +130,10 @@ glm::dvec3 ReferenceRenderer::follow(const glm::dvec3& org, const glm::dvec3& di
         if (!fromAbove) N = -N; // facing the ray, whichever side it comes from
         const double F = fresnelExact(-glm::dot(dir, N), n1, n2);
         c = glm::dvec3(0.0);
-        if (facet.weight > 0.0) {
+        if (facet.met) {
             c = F * follow(w.point, glm::reflect(dir, N), inWater, waterHits + 1);
             glm::dvec3 R;
             if (F < 1.0 && snell(dir, N, n1, n2, R)) c += (1.0 - F) * follow(w.point, R, !inWater, waterHits + 1);
-            c *= facet.weight;
         }
         length = w.t;
     } else {

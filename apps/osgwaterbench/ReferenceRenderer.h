@@ -44,21 +44,16 @@ struct ImageSetup {
     double refineAbove = 0.01;
 };
 
-//! The normal of a facet whose slopes are those of the unit upward normal `N` plus a draw from an
-//! isotropic Gaussian of total variance `variance` (each axis half of it): the slopes the waves'
-//! normal does not show at a point (Reference::roughnessAt). The draw is a function of `seed` alone
-//! (a ray's own bits: the image does not depend on which thread traced it). N itself where variance
-//! is 0 or N is not upward.
-glm::dvec3 subgridNormal(const glm::dvec3& N, double variance, std::uint64_t seed);
-
 //! A facet a ray meets where the waves' unit upward normal is `waves` and the slopes below it have
-//! `variance`: its normal (subgridNormal), drawn in proportion to the area it shows the ray (never one
-//! turned away), so that the mean over many draws is the mean over the facets as the ray sees them:
-//! what the kit's shading integrates (owFresnelAndLean). Weight 1 (0 only for a ray that grazes the
-//! level so closely that no facet shows); `waves` itself without roughness.
+//! `variance` (each axis half of it, Gaussian): its normal, drawn in proportion to the area it shows
+//! the ray (never one turned away), so that the mean over many draws is the mean over the facets as
+//! the ray sees them: what the kit's shading integrates (owFresnelAndLean). The draw is a function of
+//! `seed` alone (a ray's own bits: the image does not depend on which thread traced it). `met` is
+//! false only for a ray that grazes the level so closely that no facet shows; `waves` itself without
+//! roughness.
 struct FacetDraw {
     glm::dvec3 normal;
-    double weight;
+    bool met;
 };
 FacetDraw drawFacet(const glm::dvec3& waves, double variance, const glm::dvec3& dir, std::uint64_t seed);
 
