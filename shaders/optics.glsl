@@ -62,80 +62,81 @@ float owFresnel(float cosE, float n1, float n2, float q)
 #endif
 }
 
+// Smith's Lambda for Gaussian slopes of deviation s along the way a ray leaves, tanUp the tangent
+// of its elevation above the level (> 0): a wave ahead meets the ray from a share Lambda / (1 + Lambda)
+// of its starting points. erfc from Abramowitz and Stegun's 7.1.26 (within 1.5e-7), which carries the
+// exp(-nu^2) the first term has too.
+float owSmithLambda(float tanUp, float s)
+{
+    float nu = max(tanUp, 1e-6) / (1.41421356 * s);
+    float t = 1.0 / (1.0 + 0.3275911 * nu);
+    float erfcOverGauss = ((((1.061405429 * t - 1.453152027) * t + 1.421413741) * t - 0.284496736) * t + 0.254829592) * t;
+    return max(0.5 * exp(-nu * nu) * (0.56418958 / nu - erfcOverGauss), 0.0);
+}
+
 // The reflectance of a pixel whose normal hides slopes of variance `roughness` (their mean
-// |grad h|^2, alike every way): owFresnel averaged over the facets the eye sees, each weighted by its
-// area seen from the eye (Smith's visible normals: masking does not depend on a facet's slope, only
-// facets turned away are hidden). Along the plane of incidence a slope a tilts the facet towards or
-// away from the eye: its seen area per unit of level is cosE - sinE a, its cosine that over
-// sqrt(1 + a^2 + b^2). Across the plane, b only shortens that, taken at its mean square. Gauss-Legendre
-// in four nodes over a from -3 deviations to where the facets turn away: within 0.007 of the full
-// integral over both slopes (tests). At grazing under a breeze (0.029) F falls from 1 to about 0.45,
-// as Bruneton, Neyret and Holzschuch's mean Fresnel (2010); facing the water it hardly moves.
-// The same in one pass with where the reflected light comes from: (F, the mean slope towards the
-// eye of the seen facets weighted by the light each reflects, its deviation). Seen from the eye,
-// facets tilted towards it show more area and the ones tilted far away hide, so the seen facets
-// lean towards the eye and their mirror rays rise by twice the lean; but the most tilted reflect
-// least (their light meets them less grazing), so the light's mean lean is the F-weighted one. At
-// grazing under a breeze the reflection comes from sky a few tenths of a radian above the mean
-// normal's mirror ray, as every ray of the exact reference finds. A facet's ray sent back under
-// the level counts too (owShareSentUnder says how many there are).
-vec3 owFresnelAndLean(float cosE, float roughness, float n1, float n2, float q)
+// |grad h|^2, alike every way), with where its reflected light comes from and how much of it leaves
+// the waves: (F, lean, deviation, escapes).
+// - F: owFresnel averaged over the facets the eye sees, each weighted by its area seen from the eye
+//   (Smith's visible normals: masking does not depend on a facet's slope, only facets turned away
+//   are hidden). Along the plane of incidence a slope a tilts the facet towards or away from the
+//   eye: its seen area per unit of level is cosE - sinE a, its cosine that over sqrt(1 + a^2 + b^2).
+//   Across the plane, b only shortens that, taken at its mean square. At grazing under a breeze
+//   (0.029) F falls from 1 to about 0.45, as Bruneton, Neyret and Holzschuch's mean Fresnel (2010);
+//   facing the water it hardly moves.
+// - lean, deviation: the mean slope towards the eye of the seen facets weighted by the light each
+//   reflects, and its deviation. Facets tilted towards the eye show more area and the ones tilted
+//   far away hide, so the seen facets lean towards the eye and their mirror rays rise by twice the
+//   lean; but the most tilted reflect least, so the light's mean lean is the F-weighted one. At
+//   grazing under a breeze the reflection comes from sky a few tenths of a radian above the mean
+//   normal's mirror ray, as every ray of the exact reference finds.
+// - escapes: the share of that light whose mirror rays leave the waves. A facet tilted away by a
+//   turns its mirror ray (elevation e above the level, sinMirror its sine) down by 2 atan(a): beyond
+//   tan(e / 2) the ray goes back under the level (the slopes across the plane turn it a little
+//   lower, taken at their mean square); below, it rises, and a wave ahead still meets it from Smith's
+//   share Lambda / (1 + Lambda) of the facets. Where the eye grazes, the
+//   facets that reflect most are the least tilted, and their rays rise lowest: under a breeze a
+//   sixth of far water's reflected light meets the next wave (the exact reference's rays agree).
+//   That light passes mostly into the water: the caller shows it as the water's own.
+// Gauss-Legendre in four nodes over the rising facets (from -3 deviations to tan(e / 2)) and two over
+// the ones sent under (to where the facets turn away), so that no node straddles the kink: within
+// 0.007 of the full integrals over both slopes for F, 0.15 deviations for the lean, 0.03 for the
+// escaping share (tests). Mirrored in osgWater::optics::fresnelAndLean.
+vec4 owFresnelAndLean(float cosE, float sinMirror, float roughness, float n1, float n2, float q)
 {
     float s = sqrt(max(0.5 * roughness, 1e-12)); // the slopes' deviation along the plane
     float c = clamp(cosE, 0.0, 1.0);
     float sinE = sqrt(max(1.0 - c * c, 0.0));
     float lo = -3.0 * s, hi = min(3.0 * s, c / max(sinE, 1e-6));
-    float across = 1.0 + 0.5 * roughness;
+    // the level's up in the pixel's frame (z its normal, the eye towards -y), from the mirror ray's
+    // elevation e; the eye's own elevation's sine; tan(e / 2), where facets start sending rays under
+    float sinUp = clamp(sinMirror, -1.0, 1.0), cosUp = sqrt(1.0 - sinUp * sinUp);
+    float upY = sinUp * sinE - cosUp * c, upZ = sinUp * c + cosUp * sinE;
+    float eyeUp = c * upZ - sinE * upY;
+    float under = clamp(sinUp / (1.0 + cosUp), lo, hi);
+    float across = 1.0 + 0.5 * roughness; // the slopes across the plane, at their mean square
     const vec4 node = vec4(-0.8611363116, -0.3399810436, 0.3399810436, 0.8611363116);
     const vec4 weight = vec4(0.3478548451, 0.6521451549, 0.6521451549, 0.3478548451);
-    float sum = 0.0, total = 0.0, lean = 0.0, lean2 = 0.0;
-    for (int i = 0; i < 4; ++i) {
-        float a = 0.5 * (lo + hi) + 0.5 * (hi - lo) * node[i];
+    float sum = 0.0, total = 0.0, lean = 0.0, lean2 = 0.0, escapes = 0.0;
+    for (int i = 0; i < 6; ++i) {
+        bool rising = i < 4;
+        float from = rising ? lo : under, to = rising ? under : hi;
+        float x = rising ? node[i] : (i == 4 ? -0.5773502692 : 0.5773502692);
+        float a = 0.5 * (from + to) + 0.5 * (to - from) * x;
         float seen = max(c - sinE * a, 0.0);
-        float w = weight[i] * seen * exp(-0.5 * a * a / (s * s));
+        float w = (rising ? weight[i] : 1.0) * (to - from) * seen * exp(-0.5 * a * a / (s * s));
         float wf = w * owFresnel(seen * inversesqrt(across + a * a), n1, n2, q);
         sum += wf;
         total += w;
         lean -= wf * a; // a tilts away from the eye
         lean2 += wf * a * a;
+        // the facet's mirror ray's elevation sine: the slopes across the plane lower it too
+        float rise = 2.0 * seen * (a * upY + upZ) / (across + a * a) - eyeUp;
+        if (rising && rise > 0.0) escapes += wf / (1.0 + owSmithLambda(rise * inversesqrt(max(1.0 - rise * rise, 1e-12)), s));
     }
-    if (!(total > 0.0) || !(sum > 0.0)) return vec3(owFresnel(c, n1, n2, q), 0.0, 0.0);
+    if (!(total > 0.0) || !(sum > 0.0)) return vec4(owFresnel(c, n1, n2, q), 0.0, 0.0, sinUp < 0.0 ? 0.0 : 1.0);
     lean /= sum;
-    return vec3(sum / total, lean, sqrt(max(lean2 / sum - lean * lean, 0.0)));
-}
-
-float owFresnelOverSlopes(float cosE, float roughness, float n1, float n2, float q)
-{
-    return owFresnelAndLean(cosE, roughness, n1, n2, q).x;
-}
-
-// The standard normal's distribution (Abramowitz and Stegun's 7.1.26 for erf, within 1.5e-7)
-float owNormalBelow(float z)
-{
-    float x = abs(z) * 0.70710678;
-    float t = 1.0 / (1.0 + 0.3275911 * x);
-    float erfx = 1.0 - ((((1.061405429 * t - 1.453152027) * t + 1.421413741) * t - 0.284496736) * t + 0.254829592) * t * exp(-x * x);
-    return 0.5 + 0.5 * sign(z) * erfx;
-}
-
-// The share of the mirror rays that the facets the eye sees send back under the level, where the
-// pixel's normal (cosE from the eye, its mirror ray's sine of elevation sinMirror) hides slopes of
-// variance `roughness` (both axes): a facet tilted away from the eye by a slope a along the plane of
-// incidence turns the mirror ray down by 2 atan(a), so rays go under for a > tan(e / 2), e the
-// mirror ray's elevation; each facet weighted by its area seen from the eye (c - sin a, c = cosE),
-// over Gaussian slopes in closed form. No hidden slopes: all below the level, none above.
-float owShareSentUnder(float cosE, float sinMirror, float roughness)
-{
-    float e = asin(clamp(sinMirror, -1.0, 1.0));
-    float s = sqrt(max(0.5 * roughness, 0.0));
-    if (s < 1e-6) return e < 0.0 ? 1.0 : 0.0;
-    float c = clamp(cosE, 0.0, 1.0);
-    float sinE = sqrt(max(1.0 - c * c, 0.0));
-    float visible = min(c / max(sinE, 1e-6), 1e4) / s, under = min(tan(0.5 * e) / s, visible);
-    // the facets' seen area below slope z s: c Phi(z) + sinE s phi(z)
-    float all = c * owNormalBelow(visible) + sinE * s * 0.39894228 * exp(-0.5 * visible * visible);
-    float below = c * owNormalBelow(under) + sinE * s * 0.39894228 * exp(-0.5 * under * under);
-    return all > 0.0 ? clamp((all - below) / all, 0.0, 1.0) : (e < 0.0 ? 1.0 : 0.0);
+    return vec4(sum / total, lean, sqrt(max(lean2 / sum - lean * lean, 0.0)), escapes / sum);
 }
 
 // eq. 4; d < 0 means "no bottom along the ray"

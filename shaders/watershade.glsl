@@ -254,7 +254,7 @@ vec3 owShadeWater(vec3 U, vec3 Nup, vec3 E, float roughness, out vec4 debugOut)
 #ifndef OSGWATER_EYE_BELOW
     R = refract(-E, N, n1 / n2); // never zero from air into water
 #ifdef OSGWATER_WIND
-    vec3 lean = owFresnelAndLean(cosE, roughness, n1, n2, osgWater_FresnelQ); // the slopes below the pixel
+    vec4 lean = owFresnelAndLean(cosE, Rr.z, roughness, n1, n2, osgWater_FresnelQ); // the slopes below the pixel
     F = lean.x;
 #else
     F = owFresnel(cosE, n1, n2, osgWater_FresnelQ); // the sum's waves are all drawn
@@ -347,9 +347,15 @@ vec3 owShadeWater(vec3 U, vec3 Nup, vec3 E, float roughness, out vec4 debugOut)
     debugOut = debugHit;
 #endif
 #if !defined(OSGWATER_EYE_BELOW) && !defined(OSGWATER_NO_REFRACTION)
-    // a mirror ray the waves send back under the level meets the water again, mostly to pass into
-    // it: its light is the water's own (the refracted colour here), not the sky along its direction
-    reflCol = mix(reflCol, refrCol, owShareSentUnder(cosE, Rr.z, roughness));
+    // a mirror ray the waves send back under the level, or that meets a wave ahead, meets the water
+    // again, mostly to pass into it: its light is the water's own (the refracted colour here), not
+    // the sky along its direction
+#ifdef OSGWATER_WIND
+    float escapes = lean.w;
+#else
+    float escapes = Rr.z < 0.0 ? 0.0 : 1.0; // the sum's waves are all drawn: the normal's own ray
+#endif
+    reflCol = mix(refrCol, reflCol, escapes);
 #endif
     return refrCol + F * (reflCol - refrCol); // eq. 9
 }

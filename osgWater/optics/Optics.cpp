@@ -109,51 +109,53 @@ float fresnelModel(int model, float cosE, float n1, float n2, float q)
     return fresnelSchlick(cosE, normalReflectance(n1, n2), q);
 }
 
-glm::vec3 fresnelAndLean(int model, float cosE, float roughness, float n1, float n2, float q)
+float smithLambda(float tanUp, float s)
+{
+    const double nu = std::max(double(tanUp), 1e-6) / (std::sqrt(2.0) * double(s));
+    return float(std::max(0.5 * (std::exp(-nu * nu) / (nu * std::sqrt(3.14159265358979)) - std::erfc(nu)), 0.0));
+}
+
+glm::vec4 fresnelAndLean(int model, float cosE, float sinMirror, float roughness, float n1, float n2, float q)
 {
     const float s = std::sqrt(std::max(0.5f * roughness, 1.0e-12f));
     const float c = std::min(std::max(cosE, 0.0f), 1.0f);
     const float sinE = std::sqrt(std::max(1.0f - c * c, 0.0f));
     const float lo = -3.0f * s, hi = std::min(3.0f * s, c / std::max(sinE, 1.0e-6f));
-    const float across = 1.0f + 0.5f * roughness;
-    const float node[4] = { -0.8611363116f, -0.3399810436f, 0.3399810436f, 0.8611363116f };
-    const float weight[4] = { 0.3478548451f, 0.6521451549f, 0.6521451549f, 0.3478548451f };
-    float sum = 0.0f, total = 0.0f, lean = 0.0f, lean2 = 0.0f;
-    for (int i = 0; i < 4; ++i) {
-        const float a = 0.5f * (lo + hi) + 0.5f * (hi - lo) * node[i];
+    // the level's up in the pixel's frame (z its normal, the eye towards -y), from the mirror ray's
+    // elevation e; the eye's elevation's sine; tan(e / 2), beyond which facets send their rays under
+    const float sinUp = std::min(std::max(sinMirror, -1.0f), 1.0f), cosUp = std::sqrt(1.0f - sinUp * sinUp);
+    const float upY = sinUp * sinE - cosUp * c, upZ = sinUp * c + cosUp * sinE;
+    const float eyeUp = c * upZ - sinE * upY;
+    const float under = std::min(std::max(sinUp / (1.0f + cosUp), lo), hi);
+    const float across = 1.0f + 0.5f * roughness; // the slopes across the plane, at their mean square
+    // four nodes over the rising facets, two over the ones sent under: none straddles the kink
+    const float node[6] = { -0.8611363116f, -0.3399810436f, 0.3399810436f, 0.8611363116f, -0.5773502692f, 0.5773502692f };
+    const float weight[6] = { 0.3478548451f, 0.6521451549f, 0.6521451549f, 0.3478548451f, 1.0f, 1.0f };
+    float sum = 0.0f, total = 0.0f, lean = 0.0f, lean2 = 0.0f, escapes = 0.0f;
+    for (int i = 0; i < 6; ++i) {
+        const bool rising = i < 4;
+        const float from = rising ? lo : under, to = rising ? under : hi;
+        const float a = 0.5f * (from + to) + 0.5f * (to - from) * node[i];
         const float seen = std::max(c - sinE * a, 0.0f);
-        const float w = weight[i] * seen * std::exp(-0.5f * a * a / (s * s));
+        const float w = weight[i] * (to - from) * seen * std::exp(-0.5f * a * a / (s * s));
         const float wf = w * fresnelModel(model, seen / std::sqrt(across + a * a), n1, n2, q);
         sum += wf;
         total += w;
         lean -= wf * a; // a tilts away from the eye
         lean2 += wf * a * a;
+        // the facet's mirror ray's elevation sine (the slopes across the plane lower it too)
+        const float rise = 2.0f * seen * (a * upY + upZ) / (across + a * a) - eyeUp;
+        if (rising && rise > 0.0f) escapes += wf / (1.0f + smithLambda(rise / std::sqrt(std::max(1.0f - rise * rise, 1e-12f)), s));
     }
-    if (!(total > 0.0f) || !(sum > 0.0f)) return glm::vec3(fresnelModel(model, c, n1, n2, q), 0.0f, 0.0f);
+    if (!(total > 0.0f) || !(sum > 0.0f))
+        return glm::vec4(fresnelModel(model, c, n1, n2, q), 0.0f, 0.0f, sinUp < 0.0f ? 0.0f : 1.0f);
     lean /= sum;
-    return glm::vec3(sum / total, lean, std::sqrt(std::max(lean2 / sum - lean * lean, 0.0f)));
+    return glm::vec4(sum / total, lean, std::sqrt(std::max(lean2 / sum - lean * lean, 0.0f)), escapes / sum);
 }
 
 float fresnelOverSlopes(int model, float cosE, float roughness, float n1, float n2, float q)
 {
-    return fresnelAndLean(model, cosE, roughness, n1, n2, q).x;
-}
-
-float shareSentUnder(float cosE, float sinMirror, float roughness)
-{
-    const double e = std::asin(std::min(std::max(double(sinMirror), -1.0), 1.0));
-    const double s = std::sqrt(std::max(0.5 * double(roughness), 0.0));
-    if (s < 1e-6) return e < 0.0 ? 1.0f : 0.0f;
-    const double c = std::min(std::max(double(cosE), 0.0), 1.0), sinE = std::sqrt(std::max(1.0 - c * c, 0.0));
-    // the facets' seen area below slope x: the integral of (c - sinE a) over the slopes' Gaussian
-    auto seenBelow = [&](double x) {
-        const double z = x / s;
-        return c * 0.5 * (1.0 + std::erf(z / std::sqrt(2.0))) + sinE * s * std::exp(-0.5 * z * z) / std::sqrt(2.0 * 3.14159265358979);
-    };
-    const double visible = c / std::max(sinE, 1e-9), under = std::tan(0.5 * e);
-    const double all = seenBelow(visible);
-    if (!(all > 0.0)) return e < 0.0 ? 1.0f : 0.0f;
-    return float(std::min(std::max((all - seenBelow(std::min(under, visible))) / all, 0.0), 1.0));
+    return fresnelAndLean(model, cosE, cosE, roughness, n1, n2, q).x; // the level's own mirror ray
 }
 
 FromBelow underwaterThesis(const glm::vec3& E, const glm::vec3& N, float n1, float n2, float q)

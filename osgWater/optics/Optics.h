@@ -51,19 +51,22 @@ OSGWATER_EXPORT float fresnelExact(float cosI, float n1, float n2);
 OSGWATER_EXPORT float fresnelModel(int model, float cosE, float n1, float n2, float q);
 //! fresnelModel averaged over the facets the eye sees where the pixel's normal hides slopes of
 //! variance `roughness` (mean |grad h|^2, alike every way), each facet weighted by its area seen from
-//! the eye (owFresnelOverSlopes: four Gauss-Legendre nodes along the plane of incidence).
+//! the eye (fresnelAndLean's F for a pixel whose normal is the level's).
 OSGWATER_EXPORT float fresnelOverSlopes(int model, float cosE, float roughness, float n1, float n2, float q);
-//! The same with where the reflected light comes from (owFresnelAndLean): (F, the mean slope
-//! towards the eye of the seen facets weighted by the light each reflects, that slope's deviation).
+//! Smith's Lambda for Gaussian slopes of deviation `s` along a ray leaving at elevation atan(tanUp)
+//! above the level: a wave ahead meets the ray from a share Lambda / (1 + Lambda) of its starts.
+OSGWATER_EXPORT float smithLambda(float tanUp, float s);
+//! The light a pixel reflects where its normal hides slopes of variance `roughness`
+//! (owFresnelAndLean): (F, the mean slope towards the eye of the seen facets weighted by the light
+//! each reflects, that slope's deviation, the share of that light whose mirror rays leave the waves).
 //! The seen facets lean towards the eye (more of their area faces it, the far-tilted hide), so their
-//! mirror rays rise; the most tilted reflect least, so the light's lean is the F-weighted mean.
-OSGWATER_EXPORT glm::vec3 fresnelAndLean(int model, float cosE, float roughness, float n1, float n2, float q);
-//! The share of the mirror rays that the facets the eye sees send back under the level, where the
-//! pixel's normal (cosE from the eye, its mirror ray's sine of elevation sinMirror) hides slopes of
-//! variance `roughness` (owShareSentUnder): a facet tilted away from the eye by a slope a along the
-//! plane of incidence turns the mirror ray down by 2 atan(a), each facet weighted by its area seen
-//! from the eye, in closed form over Gaussian slopes. No hidden slopes: 1 below the level, else 0.
-OSGWATER_EXPORT float shareSentUnder(float cosE, float sinMirror, float roughness);
+//! mirror rays rise; the most tilted reflect least, so the light's lean is the F-weighted mean. A
+//! facet tilted away by a turns the pixel's mirror ray (sine of its elevation above the level:
+//! sinMirror) down by 2 atan(a): past the level it goes under; above it a wave ahead meets it from
+//! Smith's share of the facets (smithLambda). Four Gauss-Legendre nodes over the rising facets, two
+//! over the ones sent under.
+OSGWATER_EXPORT glm::vec4 fresnelAndLean(int model, float cosE, float sinMirror, float roughness, float n1, float n2,
+                                         float q);
 
 //! The surface seen from below (thesis §7.5): E unit towards the eye (down, into the water), N unit
 //! normal on the eye's side, n1 water, n2 air. R: direction of the transmitted ray (not unit for the
