@@ -687,7 +687,7 @@ TEST(RenderCaustics, TheSunReflectedOffFlatWaterLightsAWallAboveItByTheReflected
 {
     // the sun 20 degrees above the horizon towards +x; a white wall at x = -3 facing +x, standing
     // on the water: the direct sun gives it n.L = cos 20 deg, the sun's mirror image under flat
-    // water as much again times the reflected share F at the sun's incidence (Schlick, q 5); a sun
+    // water as much again times the reflected share F at the sun's incidence (the settings' model); a sun
     // of half strength keeps the sum below white, in linear light, shown encoded
     const double e = osg::DegreesToRadians(20.0);
     const osg::Vec3 sun(float(std::cos(e)), 0.0f, float(std::sin(e)));
@@ -710,7 +710,8 @@ TEST(RenderCaustics, TheSunReflectedOffFlatWaterLightsAWallAboveItByTheReflected
         osg::ref_ptr<osg::Image> img = sc.h.readColor();
         return double(pixel(img.get(), img->s() / 2, img->t() / 2)[0]);
     };
-    const double F = optics::fresnelSchlick(float(std::sin(e)), optics::normalReflectance(1.0f, 1.333f), 5.0f);
+    const double F = optics::fresnelModel(s->getFresnelModel(), float(std::sin(e)), s->getAirIOR(), s->getWaterIOR(),
+                                          s->getFresnelModelExponent());
     EXPECT_NEAR(wallColour(), optics::encodeSrgb(float(sunLight * std::cos(e) * (1.0 + F))), 0.01) << "F " << F;
     CausticsCamera* r = osgWater::internals(*sc.water).getReflectedCausticsCamera();
     ASSERT_NE(r, nullptr);

@@ -45,7 +45,7 @@ osg::ref_ptr<WaterNode> pond()
     s->setWaterIOR(1.34f);
     s->setWaterColor(osg::Vec3(0.1f, 0.3f, 0.2f));
     s->setAttenuation(0.25f);
-    s->setFresnelModel(WaterSettings::FRESNEL_EXACT);
+    s->setFresnelModel(WaterSettings::FRESNEL_RECIPROCAL);
     s->setFresnelReciprocalPower(7.5f);
     s->setRefractionLookup(WaterSettings::BRACKETED);
     s->setSearchSteps(5);
@@ -105,7 +105,7 @@ TEST(Serialization, ExpectedTextReadsBackIntoTheSameNode)
     EXPECT_FLOAT_EQ(s->getWaterIOR(), 1.34f);
     EXPECT_EQ(s->getWaterColor(), osg::Vec3(0.1f, 0.3f, 0.2f));
     EXPECT_FLOAT_EQ(s->getAttenuation(), 0.25f);
-    EXPECT_EQ(s->getFresnelModel(), WaterSettings::FRESNEL_EXACT);
+    EXPECT_EQ(s->getFresnelModel(), WaterSettings::FRESNEL_RECIPROCAL);
     EXPECT_FLOAT_EQ(s->getFresnelReciprocalPower(), 7.5f);
     EXPECT_FLOAT_EQ(s->getFresnelExponent(), 5.0f); // absent: default
     EXPECT_EQ(s->getRefractionLookup(), WaterSettings::BRACKETED);
@@ -157,7 +157,7 @@ TEST(Serialization, OsgtAndOsgbRoundTripExactly)
         ASSERT_TRUE(w.valid()) << ext;
         ASSERT_TRUE(osgDB::writeNodeFile(*w, b));
         EXPECT_EQ(slurp(a), slurp(b)) << ext;
-        EXPECT_EQ(w->getSettings()->getFresnelModel(), WaterSettings::FRESNEL_EXACT) << ext;
+        EXPECT_EQ(w->getSettings()->getFresnelModel(), WaterSettings::FRESNEL_RECIPROCAL) << ext;
         EXPECT_EQ(w->getSettings()->getToneCurve(), WaterSettings::TONE_ACES) << ext;
         EXPECT_EQ(w->getSurface()->getWaves().size(), 1u) << ext;
     }

@@ -59,7 +59,7 @@ REGISTER_OBJECT_WRAPPER(osgWater_WaterSettings, new osgWater::WaterSettings, osg
     ADD_VEC3F_FIELD(Absorption, osgWater::WaterSettings::defaultAbsorption());
     ADD_VEC3F_FIELD(Scattering, osgWater::WaterSettings::defaultScattering());
     ADD_VEC3F_FIELD(Backscattering, osgWater::WaterSettings::defaultBackscattering());
-    BEGIN_ENUM_FIELD(FresnelModel, FRESNEL_SCHLICK);
+    BEGIN_ENUM_FIELD(FresnelModel, FRESNEL_EXACT);
         ADD_ENUM_VALUE(FRESNEL_SCHLICK);
         ADD_ENUM_VALUE(FRESNEL_POWER);
         ADD_ENUM_VALUE(FRESNEL_EXACT);

@@ -41,7 +41,7 @@ WaterSettings::WaterSettings()
     : _airIOR(1.0f), _waterIOR(1.333f),
       _waterColor(0.0f, 0.2f, 0.1f), _attenuation(0.5f), _waterModel(WATER_THESIS),
       _absorption(defaultAbsorption()), _scattering(defaultScattering()), _backscattering(defaultBackscattering()),
-      _fresnelModel(FRESNEL_SCHLICK), _fresnelExponent(5.0f), _fresnelReciprocalPower(6.62f),
+      _fresnelModel(FRESNEL_EXACT), _fresnelExponent(5.0f), _fresnelReciprocalPower(6.62f),
       _reflectionScale(1.0f),
       _refractionLookup(ITERATIVE), _reflectionLookup(REFLECTION_SEARCH), _reflectionPlaneHeight(0.0f),
       _refractionPlaneDepth(0.0f), _searchSteps(3), _errorBudget(0.25f),
