@@ -94,10 +94,10 @@ float owSmithLambda(float tanUp, float s)
 //   turns its mirror ray (elevation e above the level, sinMirror its sine) down by 2 atan(a): beyond
 //   tan(e / 2) the ray goes back under the level (the slopes across the plane turn it a little
 //   lower, taken at their mean square); below, it rises, and a wave ahead still meets it from Smith's
-//   share Lambda / (1 + Lambda) of the facets. Where the eye grazes, the
-//   facets that reflect most are the least tilted, and their rays rise lowest: under a breeze a
-//   sixth of far water's reflected light meets the next wave (the exact reference's rays agree).
-//   That light passes mostly into the water: the caller shows it as the water's own.
+//   share Lambda / (1 + Lambda) of the facets. Where the eye grazes, the facets that reflect most
+//   are the least tilted, and their rays rise lowest: under a breeze a sixth of far water's
+//   reflected light meets the next wave (the exact reference's rays agree). That light passes
+//   mostly into the water: the caller shows it as the water's own.
 // Gauss-Legendre in four nodes over the rising facets (from -3 deviations to tan(e / 2)) and two over
 // the ones sent under (to where the facets turn away), so that no node straddles the kink: within
 // 0.007 of the full integrals over both slopes for F, 0.15 deviations for the lean, 0.03 for the
@@ -130,9 +130,10 @@ vec4 owFresnelAndLean(float cosE, float sinMirror, float roughness, float n1, fl
         total += w;
         lean -= wf * a; // a tilts away from the eye
         lean2 += wf * a * a;
+        if (!rising) continue; // sent under: none of its light escapes
         // the facet's mirror ray's elevation sine: the slopes across the plane lower it too
         float rise = 2.0 * seen * (a * upY + upZ) / (across + a * a) - eyeUp;
-        if (rising && rise > 0.0) escapes += wf / (1.0 + owSmithLambda(rise * inversesqrt(max(1.0 - rise * rise, 1e-12)), s));
+        if (rise > 0.0) escapes += wf / (1.0 + owSmithLambda(rise * inversesqrt(max(1.0 - rise * rise, 1e-12)), s));
     }
     if (!(total > 0.0) || !(sum > 0.0)) return vec4(owFresnel(c, n1, n2, q), 0.0, 0.0, sinUp < 0.0 ? 0.0 : 1.0);
     lean /= sum;

@@ -376,7 +376,7 @@ std::vector<WindPixel> windPixels(Harness& h, WaterNode& water, const osg::Vec3d
 // (DEBUG_FRESNEL) and escapes the CPU mirror's share of its reflected light that leaves the waves
 // (fresnelAndLean, at the pixel's cosine, mirror ray and roughness from DEBUG_SURFACE and
 // DEBUG_SLOPES), within 0.5/255 at the median and 4/255 at the 99th percentile (the colour's reads
-// against the debug outputs' own; measured 0.03 and 2.1; with the waves ahead meeting no rising ray,
+// against the debug outputs' own; measured 0.02 and 2.0 under exact Fresnel; with the waves ahead meeting no rising ray,
 // 1.9 and 5.4); where a quarter or more of it is lost (looking 1 m above the water along it), the sky
 // along the rays would be 20/255 and more off.
 TEST(RenderSurface, UnderTheWindTheMirrorRaysSentUnderTheLevelShowTheWater)

@@ -143,9 +143,10 @@ glm::vec4 fresnelAndLean(int model, float cosE, float sinMirror, float roughness
         total += w;
         lean -= wf * a; // a tilts away from the eye
         lean2 += wf * a * a;
+        if (!rising) continue; // sent under: none of its light escapes
         // the facet's mirror ray's elevation sine (the slopes across the plane lower it too)
         const float rise = 2.0f * seen * (a * upY + upZ) / (across + a * a) - eyeUp;
-        if (rising && rise > 0.0f) escapes += wf / (1.0f + smithLambda(rise / std::sqrt(std::max(1.0f - rise * rise, 1e-12f)), s));
+        if (rise > 0.0f) escapes += wf / (1.0f + smithLambda(rise / std::sqrt(std::max(1.0f - rise * rise, 1e-12f)), s));
     }
     if (!(total > 0.0f) || !(sum > 0.0f))
         return glm::vec4(fresnelModel(model, c, n1, n2, q), 0.0f, 0.0f, sinUp < 0.0f ? 0.0f : 1.0f);
