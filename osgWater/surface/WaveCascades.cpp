@@ -364,8 +364,10 @@ WaveCascades::Texel WaveCascades::sample(double x, double y) const
 double WaveCascades::subTexelSlopeVariance(double x, double y) const
 {
     if (!std::isfinite(x) || !std::isfinite(y)) return 0.0;
-    osg::Vec2d source;
-    over(x, y, &source);
+    // the undisplaced point the water over (x, y) came from: (x, y) itself without chop, where a
+    // sample of every cascade would only say so
+    osg::Vec2d source(x, y);
+    if (_params.choppiness != 0.0) over(x, y, &source);
     double v = 0.0;
     for (const Cascade& c : _cascades) {
         if (c.bins.empty()) continue;
