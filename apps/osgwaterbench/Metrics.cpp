@@ -207,15 +207,18 @@ ViewErrors measureView(const ReferenceImage& ref, const Estimate& e, const RayCa
                 const glm::dvec2 p(glm::dot(glm::dvec3(r.pixelsPerMetre[0]), d), glm::dot(glm::dvec3(r.pixelsPerMetre[1]), d));
                 const float errPx = float(glm::length(p));
                 v.refractionPx.push_back(errPx);
-                if (errPx > 2.0f) ++v.refractionCauses[int(refractionCause(e, scene, r, S, shadedOffM))];
+                v.refractionFanPx.push_back(r.refractionFan);
+                v.refractionBeyondFanPx.push_back(std::max(0.0f, errPx - r.refractionFan));
+                if (errPx > 2.0f) ++v.refractionCauses[int(refractionCause(e, scene, r, S, errPx, shadedOffM))];
             }
         }
     return v;
 }
 
 RefractionCause refractionCause(const Estimate& e, const RayCaster& scene, const PixelRef& r, const glm::dvec3& shown,
-                                float shadedOffM)
+                                float errPx, float shadedOffM)
 {
+    if (errPx <= r.refractionFan) return CAUSE_WITHIN_FAN;
     if (shadedOffM > 0.02f) return CAUSE_SHADED_POINT;
     const glm::dvec3 C = refractionEye(e), toX = glm::dvec3(r.X) - C;
     // what lies on the other side of the pass's clip plane hides nothing

@@ -48,15 +48,20 @@ struct Estimate {
     int reflectionSize = 512;
 };
 
-//! Why the refraction shows a pixel more than 2 px off: the render shades another point of the
-//! surface (its refracted ray starts elsewhere), the exact hit is hidden from the refraction pass's
-//! eye (no single depth layer holds it), or the search settled on a point the pass shows in front
-//! of the exact hit (an occluder, the near side of an edge) or behind it.
-enum RefractionCause { CAUSE_SHADED_POINT, CAUSE_HIDDEN, CAUSE_IN_FRONT, CAUSE_BEHIND, CAUSE_COUNT };
+//! Why the refraction shows a pixel more than 2 px off: no farther than the pixel's own rays'
+//! refracted hits lie apart (PixelRef::refractionFan: waves shorter than the pixel, where one ray's
+//! hit is one sample of many), the render shades another point of the surface (its refracted ray
+//! starts elsewhere), the exact hit is hidden from the refraction pass's eye (no single depth layer
+//! holds it), or the search settled on a point the pass shows in front of the exact hit (an
+//! occluder, the near side of an edge) or behind it.
+enum RefractionCause { CAUSE_WITHIN_FAN, CAUSE_SHADED_POINT, CAUSE_HIDDEN, CAUSE_IN_FRONT, CAUSE_BEHIND, CAUSE_COUNT };
 
 struct ViewErrors {
     std::vector<float> refractionPx;     //!< apparent-position error of the refracted point, screen pixels
     std::vector<float> refractionM;      //!< the same in metres
+    //! Per pixel of refractionPx, the fan of its own rays' refracted hits (PixelRef::refractionFan)
+    //! and how far the shown point lies beyond it: max(0, error - fan), screen pixels.
+    std::vector<float> refractionFanPx, refractionBeyondFanPx;
     std::vector<float> reflectionTexels; //!< reflection lookup vs the mirror ray's hit, reflection texels
     std::vector<float> reflectionShownTexels; //!< the same where the reflection pass has the hit in view
     size_t reflectionNotShown = 0;       //!< pixels measured whose hit the reflection pass cannot show
@@ -80,10 +85,11 @@ struct ViewErrors {
 bool shownPoint(const osg::Vec4f& estimate, const Estimate& e, const RayCaster& scene, glm::dvec3& out);
 
 ViewErrors measureView(const ReferenceImage& ref, const Estimate& e, const RayCaster& scene);
-//! The cause of one pixel's refraction error (`shown`: the point the pass shows there;
-//! `shadedOffM`: how far the pixel's shaded point lies from the exact crossing, negative if unknown).
+//! The cause of one pixel's refraction error (`shown`: the point the pass shows there, `errPx`
+//! its error in screen pixels; `shadedOffM`: how far the pixel's shaded point lies from the exact
+//! crossing, negative if unknown).
 RefractionCause refractionCause(const Estimate& e, const RayCaster& scene, const PixelRef& r, const glm::dvec3& shown,
-                                float shadedOffM);
+                                float errPx, float shadedOffM);
 //! Per pixel of the render's water drawn by the built-in mesh: the rasterised point V against the
 //! analytic surface under it, (V.x, V.y, h(V.x, V.y)): the angle between them at the eye, in pixels
 //! (the focal length's: exact at the view's centre, up to 1 / cos^2 of the half field of view

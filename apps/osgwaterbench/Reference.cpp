@@ -4,6 +4,7 @@
 #include <glm/geometric.hpp>
 #include <glm/mat2x2.hpp>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <thread>
 
@@ -94,26 +95,30 @@ PixelTrace Reference::trace(const glm::dvec3& eye, const glm::dvec3& dir) const
     return p;
 }
 
-bool Reference::mirrorSight(const glm::dvec3& eye, const glm::dvec3& dir, glm::dvec3& sight) const
+glm::dvec3 Reference::mirrorSight(const glm::dvec3& eye, const PixelTrace& p) const
 {
-    const Hit w = waterFirst(eye, dir);
-    if (!w.hit) return false;
-    const glm::dvec3 Rr = glm::reflect(dir, normalAt(w)); // either side of the normal: the same mirror
-    const Hit m = _scene.intersect(w.point, Rr, 1e-6 * (1.0 + w.t));
-    sight = m.hit ? glm::normalize(m.point - mirroredEye(eye)) : Rr;
-    return true;
+    return p.reflected.hit ? glm::normalize(p.reflected.point - mirroredEye(eye)) : p.Rr;
 }
 
-double mirrorSpread(const Reference& ref, const glm::dvec3& eye, const glm::dvec3 quarterDirs[4])
+PixelFan pixelFan(const Reference& ref, const glm::dvec3& eye, const glm::dvec3 quarterDirs[4])
 {
+    PixelFan fan;
     glm::dvec3 sight[4];
-    for (int i = 0; i < 4; ++i)
-        if (!ref.mirrorSight(eye, quarterDirs[i], sight[i])) return 3.141592653589793;
+    bool refracted = true;
+    for (int i = 0; i < 4; ++i) {
+        const PixelTrace q = ref.trace(eye, quarterDirs[i]);
+        if (!q.water) return fan;
+        sight[i] = ref.mirrorSight(eye, q);
+        refracted = refracted && !q.tir && q.refracted.hit;
+        fan.X[i] = q.refracted.point;
+    }
+    fan.refracted = refracted;
     double widest = 0.0;
     for (int i = 0; i < 4; ++i)
         for (int j = i + 1; j < 4; ++j)
             widest = std::max(widest, std::acos(std::min(std::max(glm::dot(sight[i], sight[j]), -1.0), 1.0)));
-    return widest;
+    fan.mirrorSpread = widest;
+    return fan;
 }
 
 bool Reference::mirrorShows(const glm::dvec3& eye, const PixelTrace& p) const
@@ -185,16 +190,22 @@ ReferenceImage traceView(const Reference& ref, const osg::Matrixd& viewMatrix, c
     img.height = height;
     img.pixels.resize(size_t(width) * height);
     std::vector<PixelTrace> full(size_t(width) * height);
+    // per water pixel, the fans of its own rays: the mirror rays' widest angle, and the refracted
+    // hits kept relative to the centre's (in pixels once the Jacobian below is known)
     std::vector<float> spread(size_t(width) * height, 0.0f);
+    std::vector<std::array<glm::vec3, 4>> quarterHits(size_t(width) * height);
+    std::vector<uint8_t> quartersRefract(size_t(width) * height, 0); // (bytes: threads write their own)
     const ViewRays rays(viewMatrix, projection, width, height);
     forEachPixelRay(viewMatrix, projection, width, height, [&](int x, int y, const glm::dvec3& eye, const glm::dvec3& dir) {
         const size_t i = size_t(y) * width + x;
         full[i] = ref.trace(eye, dir);
         if (!full[i].water) return;
-        // the pixel's own rays through its quarters, for the fan of their mirror rays
         const glm::dvec3 quarters[4] = { rays.through(x + 0.25, y + 0.25), rays.through(x + 0.75, y + 0.25),
                                          rays.through(x + 0.25, y + 0.75), rays.through(x + 0.75, y + 0.75) };
-        spread[i] = float(mirrorSpread(ref, eye, quarters));
+        const PixelFan fan = pixelFan(ref, eye, quarters);
+        spread[i] = float(fan.mirrorSpread);
+        for (int q = 0; q < 4; ++q) quarterHits[i][q] = glm::vec3(fan.X[q] - full[i].refracted.point);
+        quartersRefract[i] = fan.refracted && full[i].refracted.hit;
     });
 
     auto hitOk = [&](int x, int y, const Hit& h0) {
@@ -224,7 +235,21 @@ ReferenceImage traceView(const Reference& ref, const osg::Matrixd& viewMatrix, c
             if (!sx || !sy) continue;
             const glm::dvec3 jx = (full[size_t(y) * width + x + sx].refracted.point - p.refracted.point) * double(sx);
             const glm::dvec3 jy = (full[size_t(y + sy) * width + x].refracted.point - p.refracted.point) * double(sy);
-            if (pseudoInverse(jx, jy, r.pixelsPerMetre)) r.flags |= PixelRef::JACOBIAN;
+            if (!pseudoInverse(jx, jy, r.pixelsPerMetre)) continue;
+            r.flags |= PixelRef::JACOBIAN;
+            r.refractionFan = 1e9f;
+            if (!quartersRefract[size_t(y) * width + x]) continue;
+            const std::array<glm::vec3, 4>& q = quarterHits[size_t(y) * width + x];
+            // the widest two of the pixel's five rays (the centre's hit is q's origin)
+            auto onScreen = [&](const glm::vec3& d) {
+                return glm::length(glm::vec2(glm::dot(r.pixelsPerMetre[0], d), glm::dot(r.pixelsPerMetre[1], d)));
+            };
+            float widest = 0.0f;
+            for (int a = 0; a < 4; ++a) {
+                widest = std::max(widest, onScreen(q[a]));
+                for (int b = a + 1; b < 4; ++b) widest = std::max(widest, onScreen(q[a] - q[b]));
+            }
+            r.refractionFan = widest;
         }
     return img;
 }

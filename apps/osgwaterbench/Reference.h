@@ -40,11 +40,17 @@ struct PixelTrace {
 
 class Reference;
 
-//! The largest angle (radians) between the mirror sights (Reference::mirrorSight) of a pixel's own
-//! rays, at the centres of its four quarters; pi where some of them miss the water. Over waves
-//! shorter than the pixel the mirror rays fan out, and no single lookup can be nearer all of them
-//! than that fan is wide.
-double mirrorSpread(const Reference& ref, const glm::dvec3& eye, const glm::dvec3 quarterDirs[4]);
+//! Where a pixel's own rays, through the centres of its four quarters, lead. Over waves shorter
+//! than the pixel they fan out, and no single lookup can be nearer all of them than the fan is wide.
+struct PixelFan {
+    //! The largest angle (radians) between the quarters' mirror sights (Reference::mirrorSight); pi
+    //! where some of them miss the water.
+    double mirrorSpread = 3.141592653589793;
+    //! Every quarter meets the water and its refracted ray meets the scene: X holds those hits.
+    bool refracted = false;
+    glm::dvec3 X[4];
+};
+PixelFan pixelFan(const Reference& ref, const glm::dvec3& eye, const glm::dvec3 quarterDirs[4]);
 
 class Reference
 {
@@ -64,11 +70,10 @@ public:
     //! (SpectralWaves::Sampler::roughness, what the kit shades as roughness for a footprint under a
     //! texel); 0 for the sum of waves or a user's mesh, whose normals are all there is.
     double roughnessAt(const Hit& h) const;
-    //! Where the reflection pass shows the mirror ray of the ray eye + s dir: the unit direction from
-    //! the eye mirrored in the level to the mirror ray's hit, or the ray's own direction where it
-    //! meets nothing (the pass's camera sits at the mirrored eye). False where the ray does not meet
-    //! the water first.
-    bool mirrorSight(const glm::dvec3& eye, const glm::dvec3& dir, glm::dvec3& sight) const;
+    //! Where the reflection pass shows the mirror ray of a trace from `eye` that met the water: the
+    //! unit direction from the eye mirrored in the level to the mirror ray's hit, or the mirror ray's
+    //! own direction where it meets nothing (the pass's camera sits at the mirrored eye).
+    glm::dvec3 mirrorSight(const glm::dvec3& eye, const PixelTrace& p) const;
 
 private:
     //! The eye ray's hit on the water where nothing in the scene lies before it (else no hit).
@@ -95,7 +100,12 @@ struct PixelRef {
     glm::vec3 U{ 0.0f }, X{ 0.0f }, Y{ 0.0f }; //!< Y: the mirror ray's hit, or its direction on a miss
     float fresnel = 0.0f;
     glm::mat2x3 pixelsPerMetre{ 0.0f };       //!< least-squares inverse of dX/d(pixel): metres -> pixels
-    float mirrorSpread = 0.0f;                //!< radians: the fan of the pixel's own mirror rays (mirrorSpread)
+    float mirrorSpread = 0.0f;                //!< radians: the fan of the pixel's own mirror rays (PixelFan)
+    //! Screen pixels (through pixelsPerMetre): how far apart the widest two of the pixel's own five
+    //! rays' refracted hits lie (its centre's and its quarters', PixelFan); about 0.7 (a quarter's
+    //! diagonal) over smooth water, unbounded (1e9) where some of them do not refract into the
+    //! scene. Set with JACOBIAN.
+    float refractionFan = 0.0f;
 };
 
 struct ReferenceImage {

@@ -47,6 +47,9 @@ nlohmann::json toJson(const Record& r)
     addQuantiles(j, "refraction_px", r.refractionPx);
     j["refraction_px_over2_share"] = number(r.refractionPx.over2);
     addQuantiles(j, "refraction_m", r.refractionM);
+    addQuantiles(j, "refraction_fan_px", r.refractionFanPx);
+    addQuantiles(j, "refraction_beyond_fan_px", r.refractionBeyondFanPx);
+    j["refraction_beyond_fan_over2_share"] = number(r.refractionBeyondFanPx.over2);
     addQuantiles(j, "reflection_texels", r.reflectionTexels);
     addQuantiles(j, "reflection_shown_texels", r.reflectionShownTexels);
     j["reflection_not_shown"] = r.reflectionNotShown;
@@ -56,7 +59,7 @@ nlohmann::json toJson(const Record& r)
     addQuantiles(j, "drawn_surface_px", r.drawnSurfacePx);
     addQuantiles(j, "shaded_point_cm", r.shadedPointCm);
     j["shaded_point_over_2cm_share"] = number(r.shadedPointCm.over2);
-    const char* causes[CAUSE_COUNT] = { "shaded_point", "hidden", "in_front", "behind" };
+    const char* causes[CAUSE_COUNT] = { "within_fan", "shaded_point", "hidden", "in_front", "behind" };
     for (int c = 0; c < CAUSE_COUNT; ++c) j[std::string("refraction_over2_") + causes[c]] = r.refractionCauses[c];
     j["refraction_misses"] = r.misses;
     j["tir_mismatch"] = r.tirMismatch;
@@ -308,6 +311,11 @@ bool writeDocs(const std::string& dir, const RunInfo& info, const std::vector<Re
            << status(def->refractionPx.median, def->refractionPx.median <= 0.25) << " |\n";
         md << "| default refraction p99 ≤ 2 px | " << fmt(def->refractionPx.p99, 2, " px") << " | "
            << status(def->refractionPx.p99, def->refractionPx.p99 <= 2.0) << " |\n";
+        md << "| the same beyond the fan of each pixel's own refracted rays (median fan "
+           << fmt(def->refractionFanPx.median, 2, " px") << ") | " << fmt(def->refractionBeyondFanPx.p99, 2, " px") << " | "
+           << status(def->refractionBeyondFanPx.p99, def->refractionBeyondFanPx.p99 <= 2.0) << " |\n";
+        md << "| default refraction: ≤ 1% of pixels over 2 px beyond their fan | " << pct(def->refractionBeyondFanPx.over2)
+           << " | " << status(def->refractionBeyondFanPx.over2, def->refractionBeyondFanPx.over2 <= 0.01) << " |\n";
         md << "| default reflection median ≤ 0.5 texel | " << fmt(def->reflectionTexels.median, 3, " texels") << " | "
            << status(def->reflectionTexels.median, def->reflectionTexels.median <= 0.5) << " |\n";
         md << "| default reflection p99 ≤ 4 texels | " << fmt(def->reflectionTexels.p99, 1, " texels") << " | "
@@ -413,10 +421,11 @@ bool writeDocs(const std::string& dir, const RunInfo& info, const std::vector<Re
        << "texels; \"shown\": only the pixels whose hit the reflection pass has in view (seen from the "
        << "mirrored eye, on the eye's side of the level, and on the texture: not behind a shore, not a ray the "
        << "waves send back under the level), which no lookup in that texture can find otherwise; \"not shown\": the share "
-       << "of the others. Fan: per shown pixel, how wide (texels) the mirror rays of its own four rays (through the "
-       << "centres of its quarters) fan over the texture; over waves shorter than a pixel they fan out, and no single "
-       << "lookup is nearer all of them than the fan is wide. Beyond fan: max(0, error - fan), the error no lookup "
-       << "the pixel's own rays could justify. Coverage: pixels where one of the reference and the render sees water and the other does "
+       << "of the others. Fan: per pixel, how far apart (the widest two) its own four rays, through the centres of "
+       << "its quarters, lead: their mirror rays' hits over the reflection texture (texels, the shown pixels), their "
+       << "refracted rays' hits on screen (pixels, as the refraction error; about 0.7 over smooth water, the quarters' "
+       << "diagonal). Over waves shorter than a pixel they fan out, and no single lookup is nearer all of them than "
+       << "the fan is wide. Beyond fan: max(0, error - fan), the error no lookup the pixel's own rays could justify. Coverage: pixels where one of the reference and the render sees water and the other does "
        << "not, over the reference's water pixels. Surface: the drawn mesh against the analytic surface, per "
        << "pixel of the render's water the rasterised point and the exact surface point under it (same x, y): "
        << "the angle between them at the eye, in pixels of the view's focal length. Shaded: the share of the "
@@ -427,16 +436,18 @@ bool writeDocs(const std::string& dir, const RunInfo& info, const std::vector<Re
        << "counting noise in brackets). Image: the view as shown against the reference image over the "
        << "reference's water pixels, the luma SSIM (11 × 11 Gaussian window, σ 1.5) and the mean CIEDE2000, "
        << "each the mean over the views, and the worst view's.\n\n"
-       << "| technique | ratio | frame ms | image SSIM | worst | image ΔE00 | worst | refr. px median | p95 | p99 | max | > 2 px | refr. m median "
-          "| refl. texels median | p99 | shown p99 | not shown | fan median | beyond fan p99 | Fresnel err. median | max | caustics RMSE "
+       << "| technique | ratio | frame ms | image SSIM | worst | image ΔE00 | worst | refr. px median | p95 | p99 | max | > 2 px "
+          "| refr. fan median | beyond fan p99 | beyond fan > 2 px | refr. m median "
+          "| refl. texels median | p99 | shown p99 | not shown | refl. fan median | beyond fan p99 | Fresnel err. median | max | caustics RMSE "
           "| coverage | surface px median | p99 | shaded > 2 cm | NaN px |\n"
-       << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+       << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
     for (const Summary& s : summaries)
         md << "| " << s.technique << " | " << fmt(s.ratioInView, 2, "×") << " | " << fmt(s.frameMs, 1) << " | "
            << fmt(s.imageSsim, 3) << " | " << fmt(s.worstImageSsim, 3) << " | " << fmt(s.imageDeltaE, 2) << " | "
            << fmt(s.worstImageDeltaE, 2) << " | " << fmt(s.refractionPx.median, 3) << " | " << fmt(s.refractionPx.p95, 2) << " | " << fmt(s.refractionPx.p99, 2)
            << " | " << fmt(s.refractionPx.max, 1) << " | " << pct(s.refractionPx.over2) << " | "
-           << fmt(s.refractionM.median, 4) << " | " << fmt(s.reflectionTexels.median, 2) << " | "
+           << fmt(s.refractionFanPx.median, 2) << " | " << fmt(s.refractionBeyondFanPx.p99, 2) << " | "
+           << pct(s.refractionBeyondFanPx.over2) << " | " << fmt(s.refractionM.median, 4) << " | " << fmt(s.reflectionTexels.median, 2) << " | "
            << fmt(s.reflectionTexels.p99, 1) << " | " << fmt(s.reflectionShownTexels.p99, 1) << " | "
            << pct(s.reflectionNotShownShare) << " | " << fmt(s.reflectionFanTexels.median, 1) << " | "
            << fmt(s.reflectionBeyondFanTexels.p99, 1) << " | " << fmt(s.fresnel.median, 4) << " | " << fmt(s.fresnel.max, 3)
@@ -461,10 +472,10 @@ bool writeDocs(const std::string& dir, const RunInfo& info, const std::vector<Re
           "water (half the mean CIEDE2000 between the two halves of its rays a pixel): error of that size is "
           "its sampling's, not the render's.\n\n"
        << "| view | eye | water px | frame ms | plain ms | ratio | image SSIM | ΔE00 mean | ΔE00 p95 | reference noise ΔE00 "
-          "| image target | refr. px median | p99 | max | refr. m median "
-          "| refl. texels median | p99 | shown p99 | not shown | fan median | beyond fan p99 | Fresnel err. median | caustics RMSE | coverage "
+          "| image target | refr. px median | p99 | max | refr. fan median | beyond fan p99 | beyond fan > 2 px | refr. m median "
+          "| refl. texels median | p99 | shown p99 | not shown | refl. fan median | beyond fan p99 | Fresnel err. median | caustics RMSE | coverage "
           "| surface px median | p99 | shaded > 2 cm | NaN px |\n"
-       << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+       << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
     for (const Record& r : records) {
         if (r.technique != "default") continue;
         md << "| " << r.view << " | " << (r.eyeBelow ? "under water" : "above") << " | " << r.waterPixels << " | "
@@ -474,7 +485,8 @@ bool writeDocs(const std::string& dir, const RunInfo& info, const std::vector<Re
            << fmt(r.image.deltaEP95Frame, 2) << ") | " << fmt(r.image.referenceNoiseWater, 2) << " | "
            << status(r.image.deltaEMeanWater, r.image.ssimWater >= 0.95 && r.image.deltaEMeanWater <= 2.0) << " | "
            << fmt(r.refractionPx.median, 3) << " | " << fmt(r.refractionPx.p99, 2) << " | " << fmt(r.refractionPx.max, 1)
-           << " | " << fmt(r.refractionM.median, 4) << " | " << fmt(r.reflectionTexels.median, 2) << " | "
+           << " | " << fmt(r.refractionFanPx.median, 2) << " | " << fmt(r.refractionBeyondFanPx.p99, 2) << " | "
+           << pct(r.refractionBeyondFanPx.over2) << " | " << fmt(r.refractionM.median, 4) << " | " << fmt(r.reflectionTexels.median, 2) << " | "
            << fmt(r.reflectionTexels.p99, 1) << " | " << fmt(r.reflectionShownTexels.p99, 1) << " | "
            << pct(r.reflectionTexels.n ? double(r.reflectionNotShown) / double(r.reflectionTexels.n)
                                        : std::numeric_limits<double>::quiet_NaN())
@@ -485,12 +497,14 @@ bool writeDocs(const std::string& dir, const RunInfo& info, const std::vector<Re
            << " |\n";
     }
     md << "\n## Refraction: the pixels over 2 px by cause (default technique)\n\n"
-       << "Shares of each view's measured refraction pixels. Shaded point: the pixel shades a surface point more "
+       << "Shares of each view's measured refraction pixels, each put down to the first cause that holds. Within "
+          "the fan: the shown point lies no farther from the exact hit than the pixel's own rays' refracted hits "
+          "lie apart (waves shorter than the pixel: one ray's hit is one sample of many). Shaded point: the pixel shades a surface point more "
           "than 2 cm from where its ray meets the waves, so its refracted ray starts elsewhere. Hidden: the exact "
           "hit is not in the refraction pass's view (something between its eye and the hit), so no single depth "
           "layer holds it. In front / behind: the search settled on a point the pass shows nearer its eye than the "
           "exact hit (an occluder, the near side of an edge) or farther.\n\n"
-       << "| view | > 2 px | shaded point | hidden | in front | behind |\n|---|---|---|---|---|---|\n";
+       << "| view | > 2 px | within the fan | shaded point | hidden | in front | behind |\n|---|---|---|---|---|---|---|\n";
     for (const Record& r : records) {
         if (r.technique != "default" || !r.refractionPx.n) continue;
         const double n = double(r.refractionPx.n);

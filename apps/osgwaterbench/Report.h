@@ -19,6 +19,7 @@ struct Record {
     size_t reflectionNotShown = 0; //!< measured pixels whose mirror hit the reflection pass cannot show
     Quantiles refractionPx, refractionM, reflectionTexels, reflectionShownTexels, fresnelError;
     Quantiles reflectionFanTexels, reflectionBeyondFanTexels; //!< the shown pixels' (ViewErrors)
+    Quantiles refractionFanPx, refractionBeyondFanPx;         //!< the refraction's pixels' (ViewErrors)
     Quantiles drawnSurfacePx; //!< the drawn mesh against the analytic surface, screen pixels
     Quantiles shadedPointCm;  //!< the point each pixel shades against its ray's exact crossing, cm (over2: > 2 cm)
     size_t refractionCauses[CAUSE_COUNT] = {}; //!< the refraction's pixels over 2 px, by cause
@@ -35,6 +36,7 @@ struct Summary {
     Quantiles refractionPx, refractionM, reflectionTexels, fresnel; //!< every pixel of every view
     Quantiles reflectionShownTexels;   //!< the pixels whose mirror hit the reflection pass shows
     Quantiles reflectionFanTexels, reflectionBeyondFanTexels; //!< the shown pixels' (ViewErrors)
+    Quantiles refractionFanPx, refractionBeyondFanPx;         //!< the refraction's pixels' (ViewErrors)
     Quantiles drawnSurfacePx;          //!< the drawn mesh against the analytic surface, every pixel of every view
     Quantiles shadedPointCm;           //!< the shaded point against the exact crossing, every pixel of every view
     double worstCoverageShare = std::numeric_limits<double>::quiet_NaN(); //!< the worst view's coverage mismatch

@@ -64,6 +64,8 @@ json toJson(const Record& r)
                { "reflectionShownTexels", toJson(r.reflectionShownTexels) },
                { "reflectionFanTexels", toJson(r.reflectionFanTexels) },
                { "reflectionBeyondFanTexels", toJson(r.reflectionBeyondFanTexels) },
+               { "refractionFanPx", toJson(r.refractionFanPx) },
+               { "refractionBeyondFanPx", toJson(r.refractionBeyondFanPx) },
                { "fresnelError", toJson(r.fresnelError) }, { "drawnSurfacePx", toJson(r.drawnSurfacePx) },
                { "shadedPointCm", toJson(r.shadedPointCm) } };
     j["refractionCauses"] = json(std::vector<size_t>(std::begin(r.refractionCauses), std::end(r.refractionCauses)));
@@ -110,6 +112,8 @@ Record recordFrom(const json& j)
     r.reflectionShownTexels = quantilesFrom(j.at("reflectionShownTexels"));
     r.reflectionFanTexels = quantilesFrom(j.at("reflectionFanTexels"));
     r.reflectionBeyondFanTexels = quantilesFrom(j.at("reflectionBeyondFanTexels"));
+    r.refractionFanPx = quantilesFrom(j.at("refractionFanPx"));
+    r.refractionBeyondFanPx = quantilesFrom(j.at("refractionBeyondFanPx"));
     r.fresnelError = quantilesFrom(j.at("fresnelError"));
     r.drawnSurfacePx = quantilesFrom(j.at("drawnSurfacePx"));
     r.shadedPointCm = quantilesFrom(j.at("shadedPointCm"));
@@ -141,6 +145,8 @@ json toJson(const Summary& s)
              { "reflectionShownTexels", toJson(s.reflectionShownTexels) },
              { "reflectionFanTexels", toJson(s.reflectionFanTexels) },
              { "reflectionBeyondFanTexels", toJson(s.reflectionBeyondFanTexels) },
+             { "refractionFanPx", toJson(s.refractionFanPx) },
+             { "refractionBeyondFanPx", toJson(s.refractionBeyondFanPx) },
              { "drawnSurfacePx", toJson(s.drawnSurfacePx) }, { "shadedPointCm", toJson(s.shadedPointCm) },
              { "worstCoverageShare", number(s.worstCoverageShare) }, { "worstCoverageView", s.worstCoverageView },
              { "reflectionNotShownShare", number(s.reflectionNotShownShare) },
@@ -165,6 +171,8 @@ Summary summaryFrom(const json& j)
     s.reflectionShownTexels = quantilesFrom(j.at("reflectionShownTexels"));
     s.reflectionFanTexels = quantilesFrom(j.at("reflectionFanTexels"));
     s.reflectionBeyondFanTexels = quantilesFrom(j.at("reflectionBeyondFanTexels"));
+    s.refractionFanPx = quantilesFrom(j.at("refractionFanPx"));
+    s.refractionBeyondFanPx = quantilesFrom(j.at("refractionBeyondFanPx"));
     s.drawnSurfacePx = quantilesFrom(j.at("drawnSurfacePx"));
     s.shadedPointCm = quantilesFrom(j.at("shadedPointCm"));
     s.worstCoverageShare = number(j.at("worstCoverageShare"));

@@ -97,7 +97,7 @@ Summary summarize(const std::string& name, const std::vector<Record>& records, s
     Summary s;
     s.technique = name;
     std::vector<double> ratios, frames, caustics, noise, ssims, deltaEs;
-    std::vector<float> px, m, refl, reflShown, reflFan, reflBeyond, fres, drawn, shaded;
+    std::vector<float> px, m, refl, reflShown, reflFan, reflBeyond, refrFan, refrBeyond, fres, drawn, shaded;
     size_t notShown = 0, coverageMismatch = 0, waterPixels = 0;
     for (size_t i = 0; i < records.size(); ++i) {
         const Record& r = records[i];
@@ -131,6 +131,8 @@ Summary summarize(const std::string& name, const std::vector<Record>& records, s
         reflShown.insert(reflShown.end(), errors[i].reflectionShownTexels.begin(), errors[i].reflectionShownTexels.end());
         reflFan.insert(reflFan.end(), errors[i].reflectionFanTexels.begin(), errors[i].reflectionFanTexels.end());
         reflBeyond.insert(reflBeyond.end(), errors[i].reflectionBeyondFanTexels.begin(), errors[i].reflectionBeyondFanTexels.end());
+        refrFan.insert(refrFan.end(), errors[i].refractionFanPx.begin(), errors[i].refractionFanPx.end());
+        refrBeyond.insert(refrBeyond.end(), errors[i].refractionBeyondFanPx.begin(), errors[i].refractionBeyondFanPx.end());
         notShown += errors[i].reflectionNotShown;
         coverageMismatch += r.coverageMismatch;
         waterPixels += r.waterPixels;
@@ -166,6 +168,8 @@ Summary summarize(const std::string& name, const std::vector<Record>& records, s
     s.reflectionShownTexels = quantiles(reflShown);
     s.reflectionFanTexels = quantiles(reflFan);
     s.reflectionBeyondFanTexels = quantiles(reflBeyond);
+    s.refractionFanPx = quantiles(refrFan);
+    s.refractionBeyondFanPx = quantiles(refrBeyond);
     if (!refl.empty()) s.reflectionNotShownShare = double(notShown) / double(refl.size());
     if (waterPixels) s.coverageMismatchShare = double(coverageMismatch) / double(waterPixels);
     s.fresnel = quantiles(fres);
@@ -468,13 +472,16 @@ int main(int argc, char** argv)
             {
                 std::vector<float> a = ve.refractionPx, b = ve.refractionM, c = ve.reflectionTexels, d = ve.fresnel,
                                    c2 = ve.reflectionShownTexels, c3 = ve.reflectionFanTexels,
-                                   c4 = ve.reflectionBeyondFanTexels;
+                                   c4 = ve.reflectionBeyondFanTexels, a2 = ve.refractionFanPx,
+                                   a3 = ve.refractionBeyondFanPx;
                 r.refractionPx = quantiles(a);
                 r.refractionM = quantiles(b);
                 r.reflectionTexels = quantiles(c);
                 r.reflectionShownTexels = quantiles(c2);
                 r.reflectionFanTexels = quantiles(c3);
                 r.reflectionBeyondFanTexels = quantiles(c4);
+                r.refractionFanPx = quantiles(a2);
+                r.refractionBeyondFanPx = quantiles(a3);
                 r.reflectionNotShown = ve.reflectionNotShown;
                 r.fresnelError = quantiles(d);
                 std::vector<float> ds = ve.drawnSurfacePx, sp = ve.shadedPointCm;
