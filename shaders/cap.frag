@@ -71,5 +71,5 @@ void main()
 #endif
     vec4 debugHit;
     vec3 color = owShadeWater(S, N, -D, roughness, debugHit);
-    gl_FragColor = owWaterFragment(S, S, color, debugHit);
+    gl_FragColor = owWaterFragment(S, S, N, roughness, color, debugHit);
 }

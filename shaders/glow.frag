@@ -20,7 +20,7 @@ void main()
 {
 #ifdef OSGWATER_GRID
 #ifdef OSGWATER_WIND
-    waterFootprint = max(length(dFdx(vLocal.xy)), length(dFdy(vLocal.xy))); // the cascades filtered as the view's are
+    waterFootprint = waterFootprintOf(dFdx(vLocal.xy), dFdy(vLocal.xy)); // the cascades filtered as the view's are
 #endif
     vec4 slopes = waterSlopesAndRoughness(vLocal.xy);
     vec3 N = normalize(vec3(-slopes.yz, 1.0));

@@ -19,8 +19,8 @@ void main()
     const float eyeSide = 1.0;
 #endif
 #ifdef OSGWATER_WIND
-    // the wind's cascades read at the pixel's footprint on the water (its longer side)
-    waterFootprint = max(length(dFdx(vLocal.xy)), length(dFdy(vLocal.xy)));
+    // the wind's cascades read at the pixel's footprint on the water
+    waterFootprint = waterFootprintOf(dFdx(vLocal.xy), dFdy(vLocal.xy));
 #endif
     float roughness;
     vec3 U = waterOnSightRay(osgWater_EyeLocal, vLocal, vDrawnError, eyeSide, N, roughness);
@@ -32,5 +32,5 @@ void main()
     vec3 E = owSafeNormalize(osgWater_EyeLocal - U, vec3(0.0, 0.0, 1.0));
     vec4 debugHit;
     vec3 color = owShadeWater(U, N, E, roughness, debugHit);
-    gl_FragColor = owWaterFragment(U, vLocal, color, debugHit);
+    gl_FragColor = owWaterFragment(U, vLocal, N, roughness, color, debugHit);
 }

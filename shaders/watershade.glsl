@@ -361,11 +361,12 @@ vec3 owShadeWater(vec3 U, vec3 Nup, vec3 E, float roughness, out vec4 debugOut)
 }
 
 // What a fragment of the water writes at U (on the surface; `drawn`: the rasterised point it was
-// found from): its colour (linear light, encoded for display: the water is drawn in the view
-// itself), or the debug output (OSGWATER_DEBUG 4: the analytic surface under U;
-// 5: the drawn point; 6: the slopes and the roughness there; else what owShadeWater reported), the
-// same for the surface and the cap (the work's b: the march's evaluations, waves.glsl's count).
-vec4 owWaterFragment(vec3 U, vec3 drawn, vec3 color, vec4 debugHit)
+// found from; N, roughness: the upward normal and the roughness it was shaded with): its colour
+// (linear light, encoded for display: the water is drawn in the view itself), or the debug output
+// (OSGWATER_DEBUG 4: the analytic surface under U; 5: the drawn point; 6: the slopes of N and the
+// roughness, as shaded; else what owShadeWater reported), the same for the surface and the cap
+// (the work's b: the march's evaluations, waves.glsl's count).
+vec4 owWaterFragment(vec3 U, vec3 drawn, vec3 N, float roughness, vec3 color, vec4 debugHit)
 {
 #if defined(OSGWATER_DEBUG) && OSGWATER_DEBUG == OSGWATER_DEBUG_SURFACE
 #ifdef OSGWATER_GRID
@@ -377,7 +378,9 @@ vec4 owWaterFragment(vec3 U, vec3 drawn, vec3 color, vec4 debugHit)
     return vec4(drawn, 2.0);
 #elif defined(OSGWATER_DEBUG) && OSGWATER_DEBUG == OSGWATER_DEBUG_SLOPES
 #ifdef OSGWATER_GRID
-    return vec4(waterSlopesAndRoughness(U.xy).yzw, 2.0);
+    // as shaded, from the reads N came from (U lies a last Newton step past them: read again there,
+    // the short waves a pixel resolves give a neighbouring point's slopes)
+    return vec4(-N.xy / N.z, roughness, 2.0);
 #else
     return vec4(0.0, 0.0, 0.0, -1.0); // a user's mesh: its normals, no slopes of waves
 #endif
