@@ -21,6 +21,7 @@ else
   echo "bench.sh: uncommitted changes to the measured sources: every technique is measured afresh" >&2
 fi
 bash scripts/with-display.sh build/apps/osgwaterbench/osgwaterbench --scene data/lake.osgt --views data/lake.views \
+  --held-out data/lake-hard.views \
   --size 1280x720 --out bench-out --docs docs --photons 2000000 "${resume[@]}" \
   --techniques default,one-step,refraction-plane,refraction-bracketed,refraction-virtual-vertices,reflection-offset,reflection-plane,mesh-grid,waves-sum,waves-wind,iterative-1,iterative-2,iterative-8,budget-0.0625,budget-0.25,budget-1,budget-4,no-rotation,rotation-thesis,texture-256,texture-1024,view-targets-0.5,view-targets-1,fresnel-schlick,fresnel-power,fresnel-reciprocal,caustics-off,caustics-unfocused,caustics-cpu,caustics-points-texture,caustics-photons-halved,caustics-mesh,caustics-mesh-supersampled,caustics-procedural,caustics-procedural-screen,caustics-tiled,caustics-reflective,environment-map,glow-off,quality-fast,quality-exact \
   "$@"

@@ -24,6 +24,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
+#include <iomanip>
 #include <sstream>
 
 using namespace bench;
@@ -747,6 +748,43 @@ std::string quickRun(const std::string& out, const std::string& key)
 
 }
 
+// Held-out views are measured apart: the default technique alone, in records marked as such and a
+// table of their own, and in none of the views' rows, the medians or the summaries
+TEST(Osgwaterbench, HeldOutViewsAreMeasuredApartFromEveryMedian)
+{
+    const std::string out = std::string(OSGWATER_TEST_TMP) + "/bench-held-out";
+    std::remove((out + "/results.json").c_str());
+    const std::string cmd = std::string("'") + OSGWATER_BENCH_APP + "' --quick --techniques default --scene '" +
+                            OSGWATER_LAKE_SCENE + "' --views '" + OSGWATER_LAKE_VIEWS + "' --held-out '" +
+                            OSGWATER_LAKE_HARD_VIEWS + "' --out '" + out + "' --docs '" + out + "/docs' > '" + out +
+                            ".log' 2>&1";
+    ASSERT_EQ(std::system(cmd.c_str()), 0) << "see " << out << ".log";
+    std::ifstream in(out + "/results.json");
+    const nlohmann::json j = nlohmann::json::parse(in);
+    ASSERT_EQ(j.size(), 2u); // the first lake view, then the first held-out view
+    EXPECT_FALSE(j[0]["held_out"].get<bool>());
+    EXPECT_TRUE(j[1]["held_out"].get<bool>());
+    EXPECT_EQ(j[1]["technique"], "default");
+    const std::string heldView = j[1]["view"];
+    EXPECT_NE(heldView.find("3 cm"), std::string::npos) << heldView;
+    EXPECT_GT(j[1]["water_pixels"].get<int>(), 0);
+    const std::string md = fileText(out + "/docs/BENCHMARKS.md");
+    const size_t views = md.find("## Views (default technique)"), held = md.find("## Held-out views"),
+                 causes = md.find("## Refraction: the pixels over 2 px by cause");
+    ASSERT_NE(views, std::string::npos);
+    ASSERT_NE(held, std::string::npos);
+    ASSERT_NE(causes, std::string::npos);
+    EXPECT_EQ(md.substr(views, held - views).find(heldView), std::string::npos) << "not among the lake's views";
+    EXPECT_NE(md.substr(held, causes - held).find("| " + heldView + " |"), std::string::npos);
+    // the summary's frame time is the lake view's alone
+    const size_t row = md.find("| default | ", md.find("## Techniques"));
+    ASSERT_NE(row, std::string::npos);
+    std::ostringstream frame;
+    frame << std::fixed << std::setprecision(1) << j[0]["frame_ms"].get<double>();
+    EXPECT_NE(md.substr(row, md.find('\n', row) - row).find("| " + frame.str() + " |"), std::string::npos);
+}
+
+
 // A run cut short goes on where it stopped: what a run of the same build finished is taken, not
 // measured again, and the tables it writes are the ones the first run wrote.
 TEST(Osgwaterbench, ARunOfTheSameBuildTakesWhatTheLastFinishedAndWritesTheSameTables)
@@ -796,6 +834,14 @@ TEST(Osgwaterbench, TheLakesEyesOnTheWaterStandAMicrometreFromItsWaves)
                 ++checked;
             }
     EXPECT_EQ(checked, 2);
+    // the held-out eye a few centimetres above the waves, and the eyes under water beneath them
+    std::vector<bench::View> hard;
+    ASSERT_TRUE(bench::readViews(OSGWATER_LAKE_HARD_VIEWS, hard, error)) << error;
+    for (const bench::View& v : hard) {
+        const double over = v.eye.z() - water->getSurface()->height(v.eye.x(), v.eye.y(), v.t);
+        if (v.name.find("3 cm above") != std::string::npos) EXPECT_NEAR(over, 0.03, 1e-6) << v.name;
+        if (v.name.find("under water") != std::string::npos) EXPECT_LT(over, -0.5) << v.name;
+    }
 }
 
 TEST(Osgwaterbench, MissingSceneFileIsAClearErrorAndNonZeroExit)

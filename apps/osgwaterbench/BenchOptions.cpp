@@ -13,6 +13,7 @@ const char* kUsage =
     "usage: osgwaterbench --scene FILE --views FILE [--size WxH] [--out DIR] [--techniques LIST]\n"
     "                     [--docs DIR] [--frames N] [--photons N] [--reference-samples N] [--quick]\n"
     "                     [--ablation-rounds N] [--ablation-only] [--resume KEY] [--water-type NAME]\n"
+    "                     [--held-out FILE]\n"
     "       osgwaterbench --fresnel-figure DIR\n"
     "  --scene FILE       .osgt/.osgb with an osgWater::WaterNode, or any model (water added at z = 0)\n"
     "  --views FILE       one view per line: ex ey ez cx cy cz ux uy uz [t] [# name]\n"
@@ -27,6 +28,9 @@ const char* kUsage =
     "                     (the far water's sub-pixel waves; default 4, 0..8, 0: none)\n"
     "  --water-type NAME  a water preset (WaterTypes: clear-lake, murky-pond, ...) on the scene's\n"
     "                     settings before every technique (default: the scene's as they are)\n"
+    "  --held-out FILE    more views (the same format), measured with the default technique alone and\n"
+    "                     kept out of every median, summary and the ablation: views no setting was\n"
+    "                     chosen on, with their own table (--quick: the first)\n"
     "  --ablation-rounds N  alternating rounds of the ablation table (default 3, 0: none)\n"
     "  --ablation-only    the ablation table alone (timing; no techniques, no reference)\n"
     "  --resume KEY       keep each finished technique and the ablation under OUT/resume, and take\n"
@@ -89,6 +93,7 @@ bool BenchOptions::read(int argc, char** argv, std::string& error)
         else if (a == "--fresnel-figure") { if (!value(fresnelFigure)) return false; }
         else if (a == "--techniques") { if (!value(techniques)) return false; }
         else if (a == "--water-type") { if (!value(waterType)) return false; }
+        else if (a == "--held-out") { if (!value(heldOutFile)) return false; }
         else if (a == "--resume") { if (!value(resumeKey)) return false; }
         else if (a == "--size") {
             if (!value(v)) return false;

@@ -10,6 +10,7 @@ struct BenchOptions {
     std::string resumeKey;         //!< --resume KEY: finished work kept and taken again (see ResumeCache)
     std::string fresnelFigure;     //!< --fresnel-figure DIR: the Fresnel fit's figure and table alone
     std::string waterType;         //!< --water-type NAME: a WaterTypes preset on the scene's settings ("": as they are)
+    std::string heldOutFile;       //!< --held-out FILE: views the default technique alone measures, apart from the rest
     int width = 1280, height = 720;
     int frames = 30;               //!< timed frames per technique and view (>= 30 unless --quick)
     size_t photons = 4000000;      //!< caustics reference photons (>= 1e6 for published tables)

@@ -13,6 +13,7 @@ struct Record {
     std::string technique, view, lookup, fresnel, caustics;
     int steps = 0, textureSize = 0;
     bool rotation = true, apparentEye = true, glow = true, eyeBelow = false;
+    bool heldOut = false; //!< a held-out view (--held-out): in no median, no summary, no ablation
     double t = 0.0;
     double frameMs = 0.0, plainMs = 0.0, ratio = 0.0;
     size_t waterPixels = 0, misses = 0, tirMismatch = 0, coverageMismatch = 0, nanPixels = 0;

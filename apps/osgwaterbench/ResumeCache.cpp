@@ -55,7 +55,7 @@ json toJson(const Record& r)
     json j = { { "technique", r.technique }, { "view", r.view }, { "lookup", r.lookup }, { "fresnel", r.fresnel },
                { "caustics", r.caustics }, { "steps", r.steps }, { "textureSize", r.textureSize },
                { "rotation", r.rotation }, { "apparentEye", r.apparentEye }, { "glow", r.glow },
-               { "eyeBelow", r.eyeBelow }, { "t", r.t }, { "frameMs", number(r.frameMs) },
+               { "eyeBelow", r.eyeBelow }, { "heldOut", r.heldOut }, { "t", r.t }, { "frameMs", number(r.frameMs) },
                { "plainMs", number(r.plainMs) }, { "ratio", number(r.ratio) }, { "waterPixels", r.waterPixels },
                { "misses", r.misses }, { "tirMismatch", r.tirMismatch }, { "coverageMismatch", r.coverageMismatch },
                { "nanPixels", r.nanPixels }, { "reflectionNotShown", r.reflectionNotShown },
@@ -97,6 +97,7 @@ Record recordFrom(const json& j)
     r.glow = j.at("glow");
     r.eyeBelow = j.at("eyeBelow");
     r.t = j.at("t");
+    r.heldOut = j.value("heldOut", false);
     r.frameMs = number(j.at("frameMs"));
     r.plainMs = number(j.at("plainMs"));
     r.ratio = number(j.at("ratio"));
@@ -233,7 +234,8 @@ ResumeCache::ResumeCache(const std::string& dir, const std::string& sourceKey, c
     _key = sourceKey + " scene " + o.scene + " views " + o.viewsFile + " size " + std::to_string(o.width) + "x" +
            std::to_string(o.height) + " frames " + std::to_string(o.frames) + " photons " + std::to_string(o.photons) +
            " reference samples " + std::to_string(o.referenceSamples) + " refine " + std::to_string(o.referenceRefine) + " ablation rounds " + std::to_string(o.ablationRounds) +
-           (o.waterType.empty() ? "" : " water type " + o.waterType) + (o.quick ? " quick" : "");
+           (o.waterType.empty() ? "" : " water type " + o.waterType) +
+           (o.heldOutFile.empty() ? "" : " held out " + o.heldOutFile) + (o.quick ? " quick" : "");
 }
 
 std::string ResumeCache::file(const std::string& name) const { return _dir + "/" + name + ".json"; }

@@ -63,6 +63,8 @@ std::string fileName(const std::string& view)
 
 // frame times are means over blocks of this many frames (then the median over blocks)
 const size_t kTimingBlock = 5;
+// the resume cache's name for the held-out views' records
+const char* const kHeldOut = "held-out";
 
 // Loads an .osgt with a WaterNode, or any model with water added at z = 0 over its extent.
 osg::ref_ptr<osgWater::WaterNode> loadScene(const std::string& file, osg::ref_ptr<osg::Node>& root)
@@ -225,6 +227,14 @@ int main(int argc, char** argv)
         return 2;
     }
     if (o.quick) views.resize(1);
+    std::vector<View> heldOut;
+    if (!o.heldOutFile.empty()) {
+        if (!readViews(o.heldOutFile, heldOut, error)) {
+            std::cerr << "error: " << error << std::endl;
+            return 2;
+        }
+        if (o.quick) heldOut.resize(1);
+    }
     std::vector<Technique> techniques;
     if (!selectTechniques(o.techniques, techniques, error)) {
         std::cerr << "error: " << error << std::endl;
@@ -335,8 +345,9 @@ int main(int argc, char** argv)
     osgWater::WaterSurface* surface = water->getSurface();
     const osgWater::WaterSurface::MeshLayout sceneMesh = surface->getMeshLayout();
     const osgWater::WaterSurface::WaveModel sceneWaves = surface->getWaveModel();
-    for (const View& v : views)
-        if (!waterCasters.count(v.t)) waterCasters[v.t] = std::make_unique<WaterCaster>(*surface, v.t);
+    for (const std::vector<View>* list : { &views, &heldOut })
+        for (const View& v : *list)
+            if (!waterCasters.count(v.t)) waterCasters[v.t] = std::make_unique<WaterCaster>(*surface, v.t);
     std::cout << "reference: " << waterCasters.begin()->second->describe() << std::endl;
     // the caustics reference at a time, over a window at a resolution (a preset may change it)
     auto photonsAt = [&](double t, int resolution, int model, const osg::Matrixd& localToSun) -> const PhotonImage& {
@@ -354,6 +365,149 @@ int main(int argc, char** argv)
                                                         base->getSunDirection(), ps)).first;
         }
         return it->second;
+    };
+
+    // one view under one technique (its settings `s` on the water, the surface's wave model
+    // `model`): timed, captured, against its reference; `vi` keys the view's references
+    auto measureOne = [&](size_t vi, const View& v, const Technique& tech, const osgWater::WaterSettings* s, int model,
+                          Record& r, ViewErrors& ve) {
+        r.technique = tech.name;
+        r.view = v.name;
+        r.t = v.t;
+        r.lookup = lookupName(*s);
+        r.steps = s->getRefractionLookup() == osgWater::WaterSettings::ONE_STEP ? 1 : s->getSearchSteps();
+        r.textureSize = s->getRefractionTextureSize();
+        r.rotation = s->getRefractionCameraRotation();
+        r.apparentEye = r.rotation && s->getRefractionCameraApparentEye();
+        r.fresnel = fresnelName(*s);
+        r.caustics = causticsName(*s);
+        r.glow = s->getGlowEnabled();
+
+        const osg::Timer_t start = osg::Timer::instance()->tick();
+        // speed: plain, water, plain again, side by side
+        timing.getCamera()->setViewMatrixAsLookAt(v.eye, v.center, v.up);
+        double tt = v.t;
+        const int plainFrames = std::max(o.frames / 3, 3);
+        scenes->setSingleChildOn(1);
+        std::vector<double> plainMs = timeFrames(timing, tt, 2, plainFrames);
+        scenes->setSingleChildOn(0);
+        const std::vector<double> waterMs = timeFrames(timing, tt, 3, o.frames);
+        scenes->setSingleChildOn(1);
+        const std::vector<double> after = timeFrames(timing, tt, 2, plainFrames);
+        plainMs.insert(plainMs.end(), after.begin(), after.end());
+        scenes->setSingleChildOn(0);
+        r.frameMs = osgWaterApps::medianOfBlockMeans(waterMs, kTimingBlock);
+        r.plainMs = osgWaterApps::medianOfBlockMeans(plainMs, kTimingBlock);
+        r.ratio = r.plainMs > 0.0 ? r.frameMs / r.plainMs : 0.0;
+
+        const osg::Timer_t phase = osg::Timer::instance()->tick();
+        // error: the estimates against the reference
+        const Estimate e = probe.capture(*water, v.t);
+        const WaterCaster& waterCaster = *waterCasters[v.t];
+        const Reference reference(sceneCaster, waterCaster, *surface, v.t, media);
+        ReferenceImage& traced = references[{ vi, model }];
+        if (traced.pixels.empty())
+            traced = traceView(reference, probe.camera()->getViewMatrix(), probe.camera()->getProjectionMatrix(), o.width,
+                               o.height);
+        const osgWater::CausticsCamera* cc = osgWater::internals(*water).getCausticsCamera();
+        std::vector<glm::vec3>& referenceImage = referenceImages[{ vi, model }];
+        if (referenceImage.empty()) {
+            // the bed's caustics and underwater shadows from the photon reference, over the
+            // window of this technique's caustics (any window will do: the photons are exact)
+            ImageSetup setup = imageLight;
+            if (cc && s->getCausticsEnabled() && !cc->getLighting().procedural) {
+                UnderwaterSun sun;
+                sun.photons = &photonsAt(v.t, cc->getResolution(), model, cc->getLighting().localToSun);
+                sun.localToSun = cc->getLighting().localToSun;
+                sun.intensity = base->getCausticsIntensity();
+                const osg::Vec3f channels = osgWater::channelExtinction(*base);
+                sun.channelExtinction = glm::dvec3(channels.x(), channels.y(), channels.z());
+                sun.level = surface->getLevel();
+                sun.towardsSun = setup.light.towardsSun;
+                sun.airIOR = media.air;
+                sun.waterIOR = media.water;
+                setup.light.sunShare = underwaterSunShare(sun, sceneCaster);
+            } else {
+                std::cout << "reference image of " << v.name << " without caustics: " << tech.name
+                          << " draws none from photons (measure the default first)" << std::endl;
+            }
+            const ReferenceRenderer renderer(reference, sceneShading, setup);
+            RenderExtras extras;
+            referenceImage = renderer.render(probe.camera()->getViewMatrix(), probe.camera()->getProjectionMatrix(),
+                                             o.width, o.height, &extras);
+            referenceNoises[{ vi, model }] = referenceNoise(extras.halves[0], extras.halves[1],
+                                                            DisplayTransform{ s->getExposure(), s->getToneCurve() },
+                                                            waterPixelsOf(traced));
+            std::cout << "reference image of " << v.name << ": " << extras.refinedPixels << " noisy pixels took "
+                      << setup.refineSamplesPerAxis << " x " << setup.refineSamplesPerAxis << " more rays" << std::endl;
+        }
+        const double captureAndTraceS = osg::Timer::instance()->delta_s(phase, osg::Timer::instance()->tick());
+        r.eyeBelow = reference.eyeBelow(glm::dvec3(v.eye.x(), v.eye.y(), v.eye.z()));
+        ve = measureView(traced, e, sceneCaster);
+        ve.drawnSurfacePx = drawnSurfaceError(e, *surface, v.t);
+        r.waterPixels = ve.waterPixels;
+        r.misses = ve.misses;
+        r.tirMismatch = ve.tirMismatch;
+        r.coverageMismatch = ve.coverageMismatch;
+        r.nanPixels = ve.nanPixels;
+        r.work = countWork(e.work.get());
+        if (e.color.valid()) {
+            const DisplayTransform display{ s->getExposure(), s->getToneCurve() };
+            osg::ref_ptr<osg::Image> side;
+            r.image = compareWithReference(*e.color, referenceImage, display, waterPixelsOf(traced),
+                                           tech.name == "default" ? &side : nullptr);
+            r.image.referenceNoiseWater = referenceNoises[{ vi, model }];
+            if (side.valid()) {
+                osgDB::writeImageFile(*side, tripletDir + "/" + fileName(v.name) + ".png");
+                if (vi == 0 && !o.docs.empty() && osgDB::makeDirectory(o.docs))
+                    osgDB::writeImageFile(*side, o.docs + "/benchmark-reference.png");
+            }
+        }
+        {
+            std::vector<float> a = ve.refractionPx, b = ve.refractionM, c = ve.reflectionTexels, d = ve.fresnel,
+                               c2 = ve.reflectionShownTexels, c3 = ve.reflectionFanTexels,
+                               c4 = ve.reflectionBeyondFanTexels, a2 = ve.refractionFanPx,
+                               a3 = ve.refractionBeyondFanPx;
+            r.refractionPx = quantiles(a);
+            r.refractionM = quantiles(b);
+            r.reflectionTexels = quantiles(c);
+            r.reflectionShownTexels = quantiles(c2);
+            r.reflectionFanTexels = quantiles(c3);
+            r.reflectionBeyondFanTexels = quantiles(c4);
+            r.refractionFanPx = quantiles(a2);
+            r.refractionBeyondFanPx = quantiles(a3);
+            r.reflectionNotShown = ve.reflectionNotShown;
+            r.fresnelError = quantiles(d);
+            std::vector<float> ds = ve.drawnSurfacePx, sp = ve.shadedPointCm;
+            r.drawnSurfacePx = quantiles(ds);
+            r.shadedPointCm = quantiles(sp);
+            std::copy(std::begin(ve.refractionCauses), std::end(ve.refractionCauses), std::begin(r.refractionCauses));
+        }
+        if (osg::ref_ptr<osg::Image> caustics = probe.readCaustics(*water)) {
+            r.nanPixels += countNonFinite(caustics.get());
+            // a tile: what the scene shader reads at the bed point under each texel of the sun's
+            // window, at the tile's texel size
+            int resolution = cc->getResolution();
+            if (cc->getLighting().tiled) {
+                const double tileTexel = water->getSettings()->getCausticsTileSize() / cc->getResolution();
+                const double window = std::max(cc->getWindow().x(), cc->getWindow().y());
+                resolution = std::max(1, int(std::lround(window / tileTexel)));
+                caustics = tileSeenFromTheSun(caustics.get(), sceneCaster, cc->getLighting(),
+                                              water->getSettings()->getSunDirection(), surface->getLevel(), resolution);
+            }
+            const PhotonImage& photons = photonsAt(v.t, resolution, model, cc->getLighting().localToSun);
+            // blocks of one size on the bed whatever the window and resolution (a focused window
+            // has fewer texels of the same size): comparable across techniques
+            const double texelMetres = std::max(cc->getWindow().x(), cc->getWindow().y()) / resolution;
+            const int block = std::max(1, int(std::lround(kCausticsBlockMetres / texelMetres)));
+            r.causticsErrors = measureCaustics(photons, caustics.get(), block);
+        }
+        std::printf("%-24s %-28s %8.1f ms  plain %6.1f ms  x%.2f  refraction px median %.3f p99 %.2f  NaN %zu"
+                    "  (timing %.0f s, capture+reference %.0f s, metrics %.0f s)\n",
+                    tech.name.c_str(), v.name.c_str(), r.frameMs, r.plainMs, r.ratio, r.refractionPx.median,
+                    r.refractionPx.p99, r.nanPixels, osg::Timer::instance()->delta_s(start, phase), captureAndTraceS,
+                    osg::Timer::instance()->delta_s(phase, osg::Timer::instance()->tick()) - captureAndTraceS);
+        std::fflush(stdout);
     };
 
     std::vector<Record> records;
@@ -375,145 +529,9 @@ int main(int argc, char** argv)
         surface->setWaveModel(tech.waves ? *tech.waves : sceneWaves);
         const int model = int(surface->getWaveModel());
         for (size_t vi = 0; vi < views.size(); ++vi) {
-            const View& v = views[vi];
             Record r;
-            r.technique = tech.name;
-            r.view = v.name;
-            r.t = v.t;
-            r.lookup = lookupName(*s);
-            r.steps = s->getRefractionLookup() == osgWater::WaterSettings::ONE_STEP ? 1 : s->getSearchSteps();
-            r.textureSize = s->getRefractionTextureSize();
-            r.rotation = s->getRefractionCameraRotation();
-            r.apparentEye = r.rotation && s->getRefractionCameraApparentEye();
-            r.fresnel = fresnelName(*s);
-            r.caustics = causticsName(*s);
-            r.glow = s->getGlowEnabled();
-
-            const osg::Timer_t start = osg::Timer::instance()->tick();
-            // speed: plain, water, plain again, side by side
-            timing.getCamera()->setViewMatrixAsLookAt(v.eye, v.center, v.up);
-            double tt = v.t;
-            const int plainFrames = std::max(o.frames / 3, 3);
-            scenes->setSingleChildOn(1);
-            std::vector<double> plainMs = timeFrames(timing, tt, 2, plainFrames);
-            scenes->setSingleChildOn(0);
-            const std::vector<double> waterMs = timeFrames(timing, tt, 3, o.frames);
-            scenes->setSingleChildOn(1);
-            const std::vector<double> after = timeFrames(timing, tt, 2, plainFrames);
-            plainMs.insert(plainMs.end(), after.begin(), after.end());
-            scenes->setSingleChildOn(0);
-            r.frameMs = osgWaterApps::medianOfBlockMeans(waterMs, kTimingBlock);
-            r.plainMs = osgWaterApps::medianOfBlockMeans(plainMs, kTimingBlock);
-            r.ratio = r.plainMs > 0.0 ? r.frameMs / r.plainMs : 0.0;
-
-            const osg::Timer_t phase = osg::Timer::instance()->tick();
-            // error: the estimates against the reference
-            const Estimate e = probe.capture(*water, v.t);
-            const WaterCaster& waterCaster = *waterCasters[v.t];
-            const Reference reference(sceneCaster, waterCaster, *surface, v.t, media);
-            ReferenceImage& traced = references[{ vi, model }];
-            if (traced.pixels.empty())
-                traced = traceView(reference, probe.camera()->getViewMatrix(), probe.camera()->getProjectionMatrix(), o.width,
-                                   o.height);
-            const osgWater::CausticsCamera* cc = osgWater::internals(*water).getCausticsCamera();
-            std::vector<glm::vec3>& referenceImage = referenceImages[{ vi, model }];
-            if (referenceImage.empty()) {
-                // the bed's caustics and underwater shadows from the photon reference, over the
-                // window of this technique's caustics (any window will do: the photons are exact)
-                ImageSetup setup = imageLight;
-                if (cc && s->getCausticsEnabled() && !cc->getLighting().procedural) {
-                    UnderwaterSun sun;
-                    sun.photons = &photonsAt(v.t, cc->getResolution(), model, cc->getLighting().localToSun);
-                    sun.localToSun = cc->getLighting().localToSun;
-                    sun.intensity = base->getCausticsIntensity();
-                    const osg::Vec3f channels = osgWater::channelExtinction(*base);
-                    sun.channelExtinction = glm::dvec3(channels.x(), channels.y(), channels.z());
-                    sun.level = surface->getLevel();
-                    sun.towardsSun = setup.light.towardsSun;
-                    sun.airIOR = media.air;
-                    sun.waterIOR = media.water;
-                    setup.light.sunShare = underwaterSunShare(sun, sceneCaster);
-                } else {
-                    std::cout << "reference image of " << v.name << " without caustics: " << tech.name
-                              << " draws none from photons (measure the default first)" << std::endl;
-                }
-                const ReferenceRenderer renderer(reference, sceneShading, setup);
-                RenderExtras extras;
-                referenceImage = renderer.render(probe.camera()->getViewMatrix(), probe.camera()->getProjectionMatrix(),
-                                                 o.width, o.height, &extras);
-                referenceNoises[{ vi, model }] = referenceNoise(extras.halves[0], extras.halves[1],
-                                                                DisplayTransform{ s->getExposure(), s->getToneCurve() },
-                                                                waterPixelsOf(traced));
-                std::cout << "reference image of " << v.name << ": " << extras.refinedPixels << " noisy pixels took "
-                          << setup.refineSamplesPerAxis << " x " << setup.refineSamplesPerAxis << " more rays" << std::endl;
-            }
-            const double captureAndTraceS = osg::Timer::instance()->delta_s(phase, osg::Timer::instance()->tick());
-            r.eyeBelow = reference.eyeBelow(glm::dvec3(v.eye.x(), v.eye.y(), v.eye.z()));
-            ViewErrors ve = measureView(traced, e, sceneCaster);
-            ve.drawnSurfacePx = drawnSurfaceError(e, *surface, v.t);
-            r.waterPixels = ve.waterPixels;
-            r.misses = ve.misses;
-            r.tirMismatch = ve.tirMismatch;
-            r.coverageMismatch = ve.coverageMismatch;
-            r.nanPixels = ve.nanPixels;
-            r.work = countWork(e.work.get());
-            if (e.color.valid()) {
-                const DisplayTransform display{ s->getExposure(), s->getToneCurve() };
-                osg::ref_ptr<osg::Image> side;
-                r.image = compareWithReference(*e.color, referenceImage, display, waterPixelsOf(traced),
-                                               tech.name == "default" ? &side : nullptr);
-                r.image.referenceNoiseWater = referenceNoises[{ vi, model }];
-                if (side.valid()) {
-                    osgDB::writeImageFile(*side, tripletDir + "/" + fileName(v.name) + ".png");
-                    if (vi == 0 && !o.docs.empty() && osgDB::makeDirectory(o.docs))
-                        osgDB::writeImageFile(*side, o.docs + "/benchmark-reference.png");
-                }
-            }
-            {
-                std::vector<float> a = ve.refractionPx, b = ve.refractionM, c = ve.reflectionTexels, d = ve.fresnel,
-                                   c2 = ve.reflectionShownTexels, c3 = ve.reflectionFanTexels,
-                                   c4 = ve.reflectionBeyondFanTexels, a2 = ve.refractionFanPx,
-                                   a3 = ve.refractionBeyondFanPx;
-                r.refractionPx = quantiles(a);
-                r.refractionM = quantiles(b);
-                r.reflectionTexels = quantiles(c);
-                r.reflectionShownTexels = quantiles(c2);
-                r.reflectionFanTexels = quantiles(c3);
-                r.reflectionBeyondFanTexels = quantiles(c4);
-                r.refractionFanPx = quantiles(a2);
-                r.refractionBeyondFanPx = quantiles(a3);
-                r.reflectionNotShown = ve.reflectionNotShown;
-                r.fresnelError = quantiles(d);
-                std::vector<float> ds = ve.drawnSurfacePx, sp = ve.shadedPointCm;
-                r.drawnSurfacePx = quantiles(ds);
-                r.shadedPointCm = quantiles(sp);
-                std::copy(std::begin(ve.refractionCauses), std::end(ve.refractionCauses), std::begin(r.refractionCauses));
-            }
-            if (osg::ref_ptr<osg::Image> caustics = probe.readCaustics(*water)) {
-                r.nanPixels += countNonFinite(caustics.get());
-                // a tile: what the scene shader reads at the bed point under each texel of the sun's
-                // window, at the tile's texel size
-                int resolution = cc->getResolution();
-                if (cc->getLighting().tiled) {
-                    const double tileTexel = water->getSettings()->getCausticsTileSize() / cc->getResolution();
-                    const double window = std::max(cc->getWindow().x(), cc->getWindow().y());
-                    resolution = std::max(1, int(std::lround(window / tileTexel)));
-                    caustics = tileSeenFromTheSun(caustics.get(), sceneCaster, cc->getLighting(),
-                                                  water->getSettings()->getSunDirection(), surface->getLevel(), resolution);
-                }
-                const PhotonImage& photons = photonsAt(v.t, resolution, model, cc->getLighting().localToSun);
-                // blocks of one size on the bed whatever the window and resolution (a focused window
-                // has fewer texels of the same size): comparable across techniques
-                const double texelMetres = std::max(cc->getWindow().x(), cc->getWindow().y()) / resolution;
-                const int block = std::max(1, int(std::lround(kCausticsBlockMetres / texelMetres)));
-                r.causticsErrors = measureCaustics(photons, caustics.get(), block);
-            }
-            std::printf("%-24s %-28s %8.1f ms  plain %6.1f ms  x%.2f  refraction px median %.3f p99 %.2f  NaN %zu"
-                        "  (timing %.0f s, capture+reference %.0f s, metrics %.0f s)\n",
-                        tech.name.c_str(), v.name.c_str(), r.frameMs, r.plainMs, r.ratio, r.refractionPx.median,
-                        r.refractionPx.p99, r.nanPixels, osg::Timer::instance()->delta_s(start, phase), captureAndTraceS,
-                        osg::Timer::instance()->delta_s(phase, osg::Timer::instance()->tick()) - captureAndTraceS);
-            std::fflush(stdout);
+            ViewErrors ve;
+            measureOne(vi, views[vi], tech, s.get(), model, r, ve);
             techRecords.push_back(r);
             errors.push_back(std::move(ve));
         }
@@ -524,6 +542,36 @@ int main(int argc, char** argv)
         }
         records.insert(records.end(), techRecords.begin(), techRecords.end());
         summaries.push_back(summary);
+    }
+    // the held-out views: the default technique alone, kept apart from every median and the ablation
+    if (!heldOut.empty()) {
+        std::vector<Record> heldRecords;
+        Summary unused;
+        if (kept.loadTechnique(kHeldOut, heldRecords, unused))
+            std::cout << "held-out views: kept from an earlier run of this build" << std::endl;
+        else {
+            std::vector<Technique> only;
+            selectTechniques("default", only, error);
+            osg::ref_ptr<osgWater::WaterSettings> s = new osgWater::WaterSettings(*base, osg::CopyOp::DEEP_COPY_ALL);
+            only.front().apply(*s);
+            water->setSettings(s.get());
+            surface->setMeshLayout(sceneMesh);
+            surface->setWaveModel(sceneWaves);
+            std::vector<ViewErrors> errors;
+            for (size_t hi = 0; hi < heldOut.size(); ++hi) {
+                Record r;
+                ViewErrors ve;
+                measureOne(views.size() + hi, heldOut[hi], only.front(), s.get(), int(sceneWaves), r, ve);
+                r.heldOut = true;
+                heldRecords.push_back(r);
+                errors.push_back(std::move(ve));
+            }
+            if (!kept.saveTechnique(kHeldOut, heldRecords, summarize("default", heldRecords, errors), error)) {
+                std::cerr << "error: " << error << std::endl;
+                return 1;
+            }
+        }
+        records.insert(records.end(), heldRecords.begin(), heldRecords.end());
     }
     water->setSettings(new osgWater::WaterSettings(*base, osg::CopyOp::DEEP_COPY_ALL));
     surface->setMeshLayout(sceneMesh);
