@@ -402,6 +402,13 @@ TEST(BenchMetric, WrongIndexOfRefractionReportsALargeError)
     const Quantiles q = quantiles(v.refractionPx);
     EXPECT_GT(q.median, 5.0);
     EXPECT_GT(q.over2, 0.5);
+    // along the render's own rays (its n = 1.1 traced exactly) the search finds what they meet: the
+    // wrong model is the image's error, not the lookup's (as the iterative search on flat water
+    // with the right n: within half a pixel at p95)
+    ASSERT_GT(v.refractionOwnPx.size(), 8000u);
+    const Quantiles own = quantiles(v.refractionOwnPx);
+    RecordProperty("own ray median / p95 / p99", std::to_string(own.median) + " / " + std::to_string(own.p95) + " / " + std::to_string(own.p99));
+    EXPECT_LT(own.p95, 0.5);
 }
 
 TEST(BenchMetric, ShadedPointsOnWavesTheReferenceDoesNotHaveReportALargeError)
@@ -506,6 +513,13 @@ TEST(BenchMetric, AReflectionLookupOffTheMirrorRaysHitReportsALargeError)
     EXPECT_LT(fan.median, 4.0);
     EXPECT_GT(beyond.median, 0.5 * o.median);
     EXPECT_LT(quantiles(search.reflectionBeyondFanTexels).p99, 1.0);
+    // along the render's own mirror rays (these resolved waves: the reference's own), the search
+    // meets their hits and the offset lies as far off them
+    ASSERT_GT(search.reflectionOwnShownTexels.size(), 8000u);
+    const Quantiles ownSearch = quantiles(search.reflectionOwnShownTexels), ownOffset = quantiles(offset.reflectionOwnShownTexels);
+    RecordProperty("own ray: search median / p99, offset median", std::to_string(ownSearch.median) + " / " + std::to_string(ownSearch.p99) + ", " + std::to_string(ownOffset.median));
+    EXPECT_LT(ownSearch.p99, 1.0);
+    EXPECT_GT(ownOffset.median, 5.0);
 }
 
 namespace {

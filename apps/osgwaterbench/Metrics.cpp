@@ -78,6 +78,38 @@ bool entersPassSide(const Estimate& e, const glm::dvec3& dir, double& t0)
     return true;
 }
 
+bool onTexture(const osg::Vec2d& t, int size) { return t.x() >= 0.0 && t.y() >= 0.0 && t.x() <= size && t.y() <= size; }
+
+// The rays the render traced at pixel (x, y): from the point it shades (DEBUG_SURFACE) at the
+// normal it shades with (DEBUG_SLOPES), facing its eye, mirrored and refracted, and their exact hits
+struct OwnRays {
+    bool valid = false, tir = false;
+    glm::dvec3 Rr{ 0.0 };
+    Hit reflected, refracted;
+};
+
+OwnRays ownRays(const Estimate& e, const RayCaster& scene, int x, int y)
+{
+    OwnRays o;
+    if (!e.shaded.valid() || !e.slopes.valid()) return o;
+    const osg::Vec4f u = px(e.shaded.get(), x, y), s = px(e.slopes.get(), x, y);
+    if (!(u.w() > 1.5f && u.w() < 2.5f) || !(s.w() > 1.5f && s.w() < 2.5f) || !finite(u) || !finite(s)) return o;
+    const glm::dvec3 U(u.x(), u.y(), u.z()), eye(e.eye.x(), e.eye.y(), e.eye.z());
+    const glm::dvec3 D = glm::normalize(U - eye);
+    glm::dvec3 N = glm::normalize(glm::dvec3(-s.x(), -s.y(), 1.0));
+    if (e.eyeBelow) N = -N;
+    if (glm::dot(N, D) > 0.0) N = -N; // a facet turned from the eye: as the reference takes it
+    const double n1 = e.eyeBelow ? e.waterIOR : e.airIOR, n2 = e.eyeBelow ? e.airIOR : e.waterIOR;
+    const double eps = 1e-6 * (1.0 + glm::length(U - eye));
+    o.valid = true;
+    o.Rr = glm::reflect(D, N);
+    o.reflected = scene.intersect(U, o.Rr, eps);
+    glm::dvec3 R;
+    o.tir = !snell(D, N, n1, n2, R);
+    if (!o.tir) o.refracted = scene.intersect(U, R, eps);
+    return o;
+}
+
 }
 
 bool shownPoint(const osg::Vec4f& est, const Estimate& e, const RayCaster& scene, glm::dvec3& out)
@@ -162,6 +194,7 @@ ViewErrors measureView(const ReferenceImage& ref, const Estimate& e, const RayCa
                     v.shadedPointCm.push_back(100.0f * shadedOffM);
                 }
             }
+            const OwnRays own = ownRays(e, scene, x, y);
             if (e.fresnel.valid()) {
                 const osg::Vec4f f = px(e.fresnel.get(), x, y);
                 if (f.w() > 1.5f && std::isfinite(f.x())) v.fresnel.push_back(std::fabs(f.x() - r.fresnel));
@@ -180,9 +213,7 @@ ViewErrors measureView(const ReferenceImage& ref, const Estimate& e, const RayCa
                     const float texels = float((est - exact).length());
                     v.reflectionTexels.push_back(texels);
                     // shown: in the pass's view and on its texture
-                    const bool onTexture = exact.x() >= 0.0 && exact.y() >= 0.0 && exact.x() <= e.reflectionSize &&
-                                           exact.y() <= e.reflectionSize;
-                    if ((r.flags & PixelRef::REFLECTION_SHOWN) && onTexture) {
+                    if ((r.flags & PixelRef::REFLECTION_SHOWN) && onTexture(exact, e.reflectionSize)) {
                         v.reflectionShownTexels.push_back(texels);
                         // the fan of the pixel's own mirror rays, in the pass's texels at its sight
                         const glm::dvec3 sight = (r.flags & PixelRef::REFLECTED_HIT)
@@ -193,6 +224,17 @@ ViewErrors measureView(const ReferenceImage& ref, const Estimate& e, const RayCa
                         v.reflectionBeyondFanTexels.push_back(std::max(0.0f, texels - fan));
                     } else
                         ++v.reflectionNotShown; // hidden, under the level, or off the texture
+                    // the render's own mirror ray
+                    osg::Vec2d ownHit;
+                    if (own.valid) {
+                        const glm::dvec3 Y = own.reflected.hit ? own.reflected.point : own.Rr;
+                        const bool shown = texel(e.reflectionMVP, osg::Vec4d(Y.x, Y.y, Y.z, own.reflected.hit ? 1.0 : 0.0),
+                                                 e.reflectionSize, ownHit) && onTexture(ownHit, e.reflectionSize) &&
+                                           reflectionPassShows(scene, e.level, glm::dvec3(e.eye.x(), e.eye.y(), e.eye.z()),
+                                                               e.eyeBelow, own.reflected, own.Rr);
+                        if (shown) v.reflectionOwnShownTexels.push_back(float((est - ownHit).length()));
+                        else ++v.reflectionOwnNotShown;
+                    }
                 }
             }
             if (!e.bottom.valid()) continue;
@@ -209,18 +251,27 @@ ViewErrors measureView(const ReferenceImage& ref, const Estimate& e, const RayCa
                 v.refractionPx.push_back(errPx);
                 v.refractionFanPx.push_back(r.refractionFan);
                 v.refractionBeyondFanPx.push_back(std::max(0.0f, errPx - r.refractionFan));
-                if (errPx > 2.0f) ++v.refractionCauses[int(refractionCause(e, scene, r, S, errPx, shadedOffM))];
+                if (errPx > 2.0f)
+                    ++v.refractionCauses[int(refractionCause(e, scene, glm::dvec3(r.X), S, errPx, r.refractionFan, shadedOffM))];
+                if (own.valid && !own.tir && own.refracted.hit) {
+                    const glm::dvec3 o = S - own.refracted.point;
+                    const float ownPx = float(glm::length(glm::dvec2(glm::dot(glm::dvec3(r.pixelsPerMetre[0]), o),
+                                                                     glm::dot(glm::dvec3(r.pixelsPerMetre[1]), o))));
+                    v.refractionOwnPx.push_back(ownPx);
+                    if (ownPx > 2.0f)
+                        ++v.refractionOwnCauses[int(refractionCause(e, scene, own.refracted.point, S, ownPx, 0.0f, -1.0f))];
+                }
             }
         }
     return v;
 }
 
-RefractionCause refractionCause(const Estimate& e, const RayCaster& scene, const PixelRef& r, const glm::dvec3& shown,
-                                float errPx, float shadedOffM)
+RefractionCause refractionCause(const Estimate& e, const RayCaster& scene, const glm::dvec3& exact,
+                                const glm::dvec3& shown, float errPx, float fanPx, float shadedOffM)
 {
-    if (errPx <= r.refractionFan) return CAUSE_WITHIN_FAN;
+    if (errPx <= fanPx) return CAUSE_WITHIN_FAN;
     if (shadedOffM > 0.02f) return CAUSE_SHADED_POINT;
-    const glm::dvec3 C = refractionEye(e), toX = glm::dvec3(r.X) - C;
+    const glm::dvec3 C = refractionEye(e), toX = exact - C;
     // what lies on the other side of the pass's clip plane hides nothing
     double t0;
     if (entersPassSide(e, toX, t0) && t0 < 1.0 && scene.intersect(C, toX, t0, 1.0 - 1e-6).hit) return CAUSE_HIDDEN;

@@ -38,6 +38,8 @@ struct Estimate {
     osg::ref_ptr<osg::Image> drawn;    //!< the drawn mesh's point under each water pixel (DEBUG_DRAWN_SURFACE)
     osg::ref_ptr<osg::Image> shaded;   //!< the surface point each water pixel shades (DEBUG_SURFACE)
     osg::ref_ptr<osg::Image> work;     //!< the loops' work at each water pixel (DEBUG_WORK)
+    osg::ref_ptr<osg::Image> slopes;   //!< the normal's slopes and roughness each pixel shades with (DEBUG_SLOPES)
+    double airIOR = 1.0, waterIOR = 1.333; //!< the render's media
     osg::Vec3d eye;                    //!< the view's eye, local frame
     double pixelsPerRadian = 0.0;      //!< the view's focal length in pixels (at the centre of the view)
     osg::Matrixd refractionView;       //!< local -> refraction pass eye space
@@ -77,6 +79,15 @@ struct ViewErrors {
     std::vector<float> drawnSurfacePx;   //!< the drawn mesh's height error, screen pixels (drawnSurfaceError)
     std::vector<float> shadedPointCm;    //!< the point the render shades against the exact crossing, centimetres
     size_t refractionCauses[CAUSE_COUNT] = {}; //!< the refraction's pixels over 2 px, by cause
+    //! Along the render's own rays: the mirror and refracted rays of each pixel's shaded point at the
+    //! normal it shades with (DEBUG_SURFACE, DEBUG_SLOPES), traced exactly. Their lookups' errors are
+    //! the passes' and searches' alone, whatever the pixel's filtering chose: the refraction's in
+    //! screen pixels (the reference's metres-to-pixels) with its pixels over 2 px by cause (hidden,
+    //! in front, behind), the reflection's in texels where its pass shows the hit, and how many it
+    //! cannot show.
+    std::vector<float> refractionOwnPx, reflectionOwnShownTexels;
+    size_t reflectionOwnNotShown = 0;
+    size_t refractionOwnCauses[CAUSE_COUNT] = {};
     size_t nanPixels = 0;                //!< pixels with a NaN or Inf in any read-back output
 };
 
@@ -85,11 +96,11 @@ struct ViewErrors {
 bool shownPoint(const osg::Vec4f& estimate, const Estimate& e, const RayCaster& scene, glm::dvec3& out);
 
 ViewErrors measureView(const ReferenceImage& ref, const Estimate& e, const RayCaster& scene);
-//! The cause of one pixel's refraction error (`shown`: the point the pass shows there, `errPx`
-//! its error in screen pixels; `shadedOffM`: how far the pixel's shaded point lies from the exact
-//! crossing, negative if unknown).
-RefractionCause refractionCause(const Estimate& e, const RayCaster& scene, const PixelRef& r, const glm::dvec3& shown,
-                                float errPx, float shadedOffM);
+//! The cause of one pixel's refraction error (`exact`: the exact hit, `shown`: the point the pass
+//! shows there, `errPx` its error in screen pixels, `fanPx` the pixel's own rays' fan (0: none);
+//! `shadedOffM`: how far the pixel's shaded point lies from the exact crossing, negative if unknown).
+RefractionCause refractionCause(const Estimate& e, const RayCaster& scene, const glm::dvec3& exact,
+                                const glm::dvec3& shown, float errPx, float fanPx, float shadedOffM);
 //! Per pixel of the render's water drawn by the built-in mesh: the rasterised point V against the
 //! analytic surface under it, (V.x, V.y, h(V.x, V.y)): the angle between them at the eye, in pixels
 //! (the focal length's: exact at the view's centre, up to 1 / cos^2 of the half field of view

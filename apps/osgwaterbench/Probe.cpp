@@ -79,7 +79,8 @@ Estimate Probe::capture(osgWater::WaterNode& water, double t)
     const std::pair<osgWater::DebugOutput, osg::ref_ptr<osg::Image> Estimate::*> outputs[] = {
         { osgWater::DEBUG_BOTTOM_HIT, &Estimate::bottom },     { osgWater::DEBUG_REFLECTION_LOOKUP, &Estimate::reflection },
         { osgWater::DEBUG_FRESNEL, &Estimate::fresnel },       { osgWater::DEBUG_DRAWN_SURFACE, &Estimate::drawn },
-        { osgWater::DEBUG_SURFACE, &Estimate::shaded },        { osgWater::DEBUG_WORK, &Estimate::work } };
+        { osgWater::DEBUG_SURFACE, &Estimate::shaded },        { osgWater::DEBUG_WORK, &Estimate::work },
+        { osgWater::DEBUG_SLOPES, &Estimate::slopes } };
     for (const auto& [output, image] : outputs) {
         water.setDebugOutput(output);
         _viewer->frame(t);
@@ -95,6 +96,8 @@ Estimate Probe::capture(osgWater::WaterNode& water, double t)
     e.eye = osg::Matrixd::inverse(camera()->getViewMatrix()).getTrans();
     e.pixelsPerRadian = camera()->getProjectionMatrix()(1, 1) * 0.5 * camera()->getViewport()->height();
     e.level = water.getSurface()->getLevel();
+    e.airIOR = water.getSettings()->getAirIOR();
+    e.waterIOR = water.getSettings()->getWaterIOR();
     e.clearance = water.getSurface()->getMaxAmplitude() + water.getSettings()->getClipOffset();
     if (osgWater::ViewPasses* p = osgWater::internals(water).getViewPasses(camera())) {
         e.eyeBelow = p->getEyeBelow();

@@ -91,7 +91,7 @@ PixelTrace Reference::trace(const glm::dvec3& eye, const glm::dvec3& dir) const
     if (!p.tir) p.refracted = _scene.intersect(p.U, p.R, eps);
     p.reflected = _scene.intersect(p.U, p.Rr, eps);
     p.underwaterPath = p.below ? w.t : (p.refracted.hit ? p.refracted.t : 0.0);
-    p.reflectionShown = mirrorShows(eye, p);
+    p.reflectionShown = reflectionPassShows(_scene, _surface.getLevel(), eye, p.below, p.reflected, p.Rr);
     return p;
 }
 
@@ -121,18 +121,19 @@ PixelFan pixelFan(const Reference& ref, const glm::dvec3& eye, const glm::dvec3 
     return fan;
 }
 
-bool Reference::mirrorShows(const glm::dvec3& eye, const PixelTrace& p) const
+bool reflectionPassShows(const RayCaster& scene, double level, const glm::dvec3& eye, bool below, const Hit& reflected,
+                         const glm::dvec3& Rr)
 {
-    const double level = _surface.getLevel(), side = p.below ? -1.0 : 1.0;
-    const glm::dvec3 mirrored = mirroredEye(eye);
+    const double side = below ? -1.0 : 1.0;
+    const glm::dvec3 mirrored(eye.x, eye.y, 2.0 * level - eye.z);
     // the mirrored eye's line of sight to the hit (t = 1 at it), or along the ray to the sky
-    const glm::dvec3 d = p.reflected.hit ? p.reflected.point - mirrored : p.Rr;
-    if (p.reflected.hit && side * (p.reflected.point.z - level) < 0.0) return false;
+    const glm::dvec3 d = reflected.hit ? reflected.point - mirrored : Rr;
+    if (reflected.hit && side * (reflected.point.z - level) < 0.0) return false;
     if (!(side * d.z > 0.0)) return false; // it never reaches the pass's side
     // from where it crosses the level (at the eye already when the eye sits between a trough and the level)
     const double t0 = std::max((level - mirrored.z) / d.z, 0.0);
-    const double t1 = p.reflected.hit ? 1.0 - 1e-6 : 1e30;
-    return !_scene.intersect(mirrored, d, t0, t1).hit;
+    const double t1 = reflected.hit ? 1.0 - 1e-6 : 1e30;
+    return !scene.intersect(mirrored, d, t0, t1).hit;
 }
 
 namespace {

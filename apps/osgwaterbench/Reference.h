@@ -35,8 +35,16 @@ struct PixelTrace {
     Hit refracted, reflected;
     double fresnel = 0.0;
     double underwaterPath = 0.0; //!< from above: |X - U|; from below: |eye - U|
-    bool reflectionShown = false; //!< the reflection pass can show the mirror ray's hit (Reference::mirrorShows)
+    bool reflectionShown = false; //!< the reflection pass can show the mirror ray's hit (reflectionPassShows)
 };
+
+//! Whether the reflection pass (the eye mirrored in the water's level, drawing the eye's side of it:
+//! above it, or below for an eye `below` the water) has in view the hit of a mirror ray along Rr
+//! (`reflected`; on a miss the sky along Rr): the hit lies on that side and is the first thing on
+//! the mirrored eye's line of sight there. Where it is not, no lookup in the reflection texture can
+//! find it (hidden behind a shore, or a ray sent back under the level).
+bool reflectionPassShows(const RayCaster& scene, double level, const glm::dvec3& eye, bool below, const Hit& reflected,
+                         const glm::dvec3& Rr);
 
 class Reference;
 
@@ -80,11 +88,6 @@ private:
     Hit waterFirst(const glm::dvec3& eye, const glm::dvec3& dir) const;
     //! The eye mirrored in the level: where the reflection pass's camera sits.
     glm::dvec3 mirroredEye(const glm::dvec3& eye) const;
-    //! Whether the reflection pass, the eye mirrored in the level drawing the eye's side of it, has
-    //! the mirror ray's hit in view: the hit (for a miss, the sky along the ray) lies on that side and
-    //! is the first thing on the mirrored eye's line of sight there. Where it is not, no lookup in
-    //! the reflection texture can find it (hidden behind a shore, or a ray sent back under the level).
-    bool mirrorShows(const glm::dvec3& eye, const PixelTrace& p) const;
     const RayCaster& _scene;
     const WaterCaster& _water;
     const osgWater::WaterSurface& _surface;

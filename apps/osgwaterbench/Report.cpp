@@ -51,6 +51,10 @@ nlohmann::json toJson(const Record& r)
     addQuantiles(j, "refraction_fan_px", r.refractionFanPx);
     addQuantiles(j, "refraction_beyond_fan_px", r.refractionBeyondFanPx);
     j["refraction_beyond_fan_over2_share"] = number(r.refractionBeyondFanPx.over2);
+    addQuantiles(j, "refraction_own_px", r.refractionOwnPx);
+    j["refraction_own_over2_share"] = number(r.refractionOwnPx.over2);
+    addQuantiles(j, "reflection_own_shown_texels", r.reflectionOwnShownTexels);
+    j["reflection_own_not_shown"] = r.reflectionOwnNotShown;
     addQuantiles(j, "reflection_texels", r.reflectionTexels);
     addQuantiles(j, "reflection_shown_texels", r.reflectionShownTexels);
     j["reflection_not_shown"] = r.reflectionNotShown;
@@ -62,6 +66,7 @@ nlohmann::json toJson(const Record& r)
     j["shaded_point_over_2cm_share"] = number(r.shadedPointCm.over2);
     const char* causes[CAUSE_COUNT] = { "within_fan", "shaded_point", "hidden", "in_front", "behind" };
     for (int c = 0; c < CAUSE_COUNT; ++c) j[std::string("refraction_over2_") + causes[c]] = r.refractionCauses[c];
+    for (int c = CAUSE_HIDDEN; c < CAUSE_COUNT; ++c) j[std::string("refraction_own_over2_") + causes[c]] = r.refractionOwnCauses[c];
     j["refraction_misses"] = r.misses;
     j["tir_mismatch"] = r.tirMismatch;
     j["coverage_mismatch"] = r.coverageMismatch;
@@ -255,17 +260,23 @@ bool writeCsv(const std::string& file, const std::vector<Record>& records, std::
 
 namespace {
 
-// A view's tails against their targets: the refraction's pixels beyond their own rays' fan (p99 <= 2
-// px, at most 1% of them over 2 px) and the reflection's where its pass shows the hit (beyond the
-// fan p99 <= 4 texels, the hits it cannot show <= 2% of the pixels); what the view has none of
-// counts as met, and "not measured" where it has neither
+double ownNotShownShare(const Record& r)
+{
+    const double n = double(r.reflectionOwnShownTexels.n + r.reflectionOwnNotShown);
+    return n > 0.0 ? double(r.reflectionOwnNotShown) / n : std::numeric_limits<double>::quiet_NaN();
+}
+
+// A view's tails against their targets, along the render's own rays (the lookups' errors alone,
+// whatever the pixel's filtering chose): the refraction's p99 <= 2 px with at most 1% of pixels over
+// 2 px, the reflection's where its pass shows the hit p99 <= 4 texels with <= 2% of the pixels it
+// cannot show; what the view has none of counts as met, and "not measured" where it has neither
 std::string tailsStatus(const Record& r)
 {
-    const bool refraction = r.refractionBeyondFanPx.n > 0, reflection = r.reflectionTexels.n > 0;
+    const bool refraction = r.refractionOwnPx.n > 0, reflection = r.reflectionOwnShownTexels.n + r.reflectionOwnNotShown > 0;
     if (!refraction && !reflection) return "not measured";
-    const bool refractionMet = !refraction || (r.refractionBeyondFanPx.p99 <= 2.0 && r.refractionBeyondFanPx.over2 <= 0.01);
-    const bool reflectionMet = !reflection || (r.reflectionBeyondFanTexels.p99 <= 4.0 &&
-                                               double(r.reflectionNotShown) <= 0.02 * double(r.reflectionTexels.n));
+    const bool refractionMet = !refraction || (r.refractionOwnPx.p99 <= 2.0 && r.refractionOwnPx.over2 <= 0.01);
+    const bool reflectionMet = !reflection || (r.reflectionOwnShownTexels.n > 0 && r.reflectionOwnShownTexels.p99 <= 4.0 &&
+                                               ownNotShownShare(r) <= 0.02);
     if (refractionMet && reflectionMet) return "met";
     return std::string("**missed**") + (refractionMet ? " (reflection)" : reflectionMet ? " (refraction)" : "");
 }
@@ -336,6 +347,15 @@ bool writeDocs(const std::string& dir, const RunInfo& info, const std::vector<Re
            << status(def->refractionBeyondFanPx.p99, def->refractionBeyondFanPx.p99 <= 2.0) << " |\n";
         md << "| default refraction: ≤ 1% of pixels over 2 px beyond their fan | " << pct(def->refractionBeyondFanPx.over2)
            << " | " << status(def->refractionBeyondFanPx.over2, def->refractionBeyondFanPx.over2 <= 0.01) << " |\n";
+        md << "| default refraction along the render's own rays: p99 ≤ 2 px | " << fmt(def->refractionOwnPx.p99, 2, " px")
+           << " | " << status(def->refractionOwnPx.p99, def->refractionOwnPx.p99 <= 2.0) << " |\n";
+        md << "| the same: ≤ 1% of pixels over 2 px | " << pct(def->refractionOwnPx.over2) << " | "
+           << status(def->refractionOwnPx.over2, def->refractionOwnPx.over2 <= 0.01) << " |\n";
+        md << "| default reflection along the render's own rays, where its pass shows the hit: p99 ≤ 4 texels | "
+           << fmt(def->reflectionOwnShownTexels.p99, 1, " texels") << " | "
+           << status(def->reflectionOwnShownTexels.p99, def->reflectionOwnShownTexels.p99 <= 4.0) << " |\n";
+        md << "| the same: the hits its pass cannot show ≤ 2% | " << pct(def->reflectionOwnNotShownShare) << " | "
+           << status(def->reflectionOwnNotShownShare, def->reflectionOwnNotShownShare <= 0.02) << " |\n";
         md << "| default reflection median ≤ 0.5 texel | " << fmt(def->reflectionTexels.median, 3, " texels") << " | "
            << status(def->reflectionTexels.median, def->reflectionTexels.median <= 0.5) << " |\n";
         md << "| default reflection p99 ≤ 4 texels | " << fmt(def->reflectionTexels.p99, 1, " texels") << " | "
@@ -457,20 +477,22 @@ bool writeDocs(const std::string& dir, const RunInfo& info, const std::vector<Re
        << "reference's water pixels, the luma SSIM (11 × 11 Gaussian window, σ 1.5) and the mean CIEDE2000, "
        << "each the mean over the views, and the worst view's.\n\n"
        << "| technique | ratio | frame ms | image SSIM | worst | image ΔE00 | worst | refr. px median | p95 | p99 | max | > 2 px "
-          "| refr. fan median | beyond fan p99 | beyond fan > 2 px | refr. m median "
-          "| refl. texels median | p99 | shown p99 | not shown | refl. fan median | beyond fan p99 | Fresnel err. median | max | caustics RMSE "
-          "| coverage | surface px median | p99 | shaded > 2 cm | NaN px |\n"
-       << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+          "| refr. fan median | beyond fan p99 | beyond fan > 2 px | own ray p99 | own ray > 2 px | refr. m median "
+          "| refl. texels median | p99 | shown p99 | not shown | refl. fan median | beyond fan p99 | own ray shown p99 | own ray not shown "
+          "| Fresnel err. median | max | caustics RMSE | coverage | surface px median | p99 | shaded > 2 cm | NaN px |\n"
+       << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
     for (const Summary& s : summaries)
         md << "| " << s.technique << " | " << fmt(s.ratioInView, 2, "×") << " | " << fmt(s.frameMs, 1) << " | "
            << fmt(s.imageSsim, 3) << " | " << fmt(s.worstImageSsim, 3) << " | " << fmt(s.imageDeltaE, 2) << " | "
            << fmt(s.worstImageDeltaE, 2) << " | " << fmt(s.refractionPx.median, 3) << " | " << fmt(s.refractionPx.p95, 2) << " | " << fmt(s.refractionPx.p99, 2)
            << " | " << fmt(s.refractionPx.max, 1) << " | " << pct(s.refractionPx.over2) << " | "
            << fmt(s.refractionFanPx.median, 2) << " | " << fmt(s.refractionBeyondFanPx.p99, 2) << " | "
-           << pct(s.refractionBeyondFanPx.over2) << " | " << fmt(s.refractionM.median, 4) << " | " << fmt(s.reflectionTexels.median, 2) << " | "
+           << pct(s.refractionBeyondFanPx.over2) << " | " << fmt(s.refractionOwnPx.p99, 2) << " | "
+           << pct(s.refractionOwnPx.over2) << " | " << fmt(s.refractionM.median, 4) << " | " << fmt(s.reflectionTexels.median, 2) << " | "
            << fmt(s.reflectionTexels.p99, 1) << " | " << fmt(s.reflectionShownTexels.p99, 1) << " | "
            << pct(s.reflectionNotShownShare) << " | " << fmt(s.reflectionFanTexels.median, 1) << " | "
-           << fmt(s.reflectionBeyondFanTexels.p99, 1) << " | " << fmt(s.fresnel.median, 4) << " | " << fmt(s.fresnel.max, 3)
+           << fmt(s.reflectionBeyondFanTexels.p99, 1) << " | " << fmt(s.reflectionOwnShownTexels.p99, 1) << " | "
+           << pct(s.reflectionOwnNotShownShare) << " | " << fmt(s.fresnel.median, 4) << " | " << fmt(s.fresnel.max, 3)
            << " | " << pct(s.causticsRmse) << (std::isfinite(s.causticsNoise) ? " (" + pct(s.causticsNoise) + ")" : "")
            << " | " << pct(s.coverageMismatchShare) << " | " << fmt(s.drawnSurfacePx.median, 3) << " | "
            << fmt(s.drawnSurfacePx.p99, 2) << " | " << pct(s.shadedPointCm.over2) << " | " << s.nanPixels << " |\n";
@@ -491,14 +513,16 @@ bool writeDocs(const std::string& dir, const RunInfo& info, const std::vector<Re
           "CIEDE2000 ≤ 2 over the water) met or missed. Reference noise: the reference image's own, over the "
           "water (half the mean CIEDE2000 between the two halves of its rays a pixel): error of that size is "
           "its sampling's, not the render's.\n\n"
-       << "Tails target: the refraction beyond each pixel's own fan (p99 ≤ 2 px, ≤ 1% of pixels over 2 px) and the "
-          "reflection where its pass shows the hit (beyond the fan p99 ≤ 4 texels, ≤ 2% of pixels not shown), met or "
-          "missed.\n\n"
+       << "Own ray: the errors of the lookups along the rays the render traced (its shaded point and normal, "
+          "traced exactly), the passes' and searches' alone whatever the pixel's filtering chose. Tails target, along "
+          "those rays: the refraction's p99 ≤ 2 px with ≤ 1% of pixels over 2 px, and the reflection's where its pass "
+          "shows the hit p99 ≤ 4 texels with ≤ 2% not shown; met or missed.\n\n"
        << "| view | eye | water px | frame ms | plain ms | ratio | image SSIM | ΔE00 mean | ΔE00 p95 | reference noise ΔE00 "
-          "| image target | refr. px median | p99 | max | refr. fan median | beyond fan p99 | beyond fan > 2 px | refr. m median "
-          "| refl. texels median | p99 | shown p99 | not shown | refl. fan median | beyond fan p99 | tails target | Fresnel err. median | caustics RMSE | coverage "
+          "| image target | refr. px median | p99 | max | refr. fan median | beyond fan p99 | beyond fan > 2 px | own ray p99 "
+          "| own ray > 2 px | refr. m median | refl. texels median | p99 | shown p99 | not shown | refl. fan median | beyond fan p99 "
+          "| own ray shown p99 | own ray not shown | tails target | Fresnel err. median | caustics RMSE | coverage "
           "| surface px median | p99 | shaded > 2 cm | NaN px |\n"
-       << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+       << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
     for (const Record& r : records) {
         if (r.technique != "default" || r.heldOut) continue;
         md << "| " << r.view << " | " << (r.eyeBelow ? "under water" : "above") << " | " << r.waterPixels << " | "
@@ -509,12 +533,13 @@ bool writeDocs(const std::string& dir, const RunInfo& info, const std::vector<Re
            << status(r.image.deltaEMeanWater, r.image.ssimWater >= 0.95 && r.image.deltaEMeanWater <= 2.0) << " | "
            << fmt(r.refractionPx.median, 3) << " | " << fmt(r.refractionPx.p99, 2) << " | " << fmt(r.refractionPx.max, 1)
            << " | " << fmt(r.refractionFanPx.median, 2) << " | " << fmt(r.refractionBeyondFanPx.p99, 2) << " | "
-           << pct(r.refractionBeyondFanPx.over2) << " | " << fmt(r.refractionM.median, 4) << " | " << fmt(r.reflectionTexels.median, 2) << " | "
+           << pct(r.refractionBeyondFanPx.over2) << " | " << fmt(r.refractionOwnPx.p99, 2) << " | " << pct(r.refractionOwnPx.over2)
+           << " | " << fmt(r.refractionM.median, 4) << " | " << fmt(r.reflectionTexels.median, 2) << " | "
            << fmt(r.reflectionTexels.p99, 1) << " | " << fmt(r.reflectionShownTexels.p99, 1) << " | "
            << pct(r.reflectionTexels.n ? double(r.reflectionNotShown) / double(r.reflectionTexels.n)
                                        : std::numeric_limits<double>::quiet_NaN())
            << " | " << fmt(r.reflectionFanTexels.median, 1) << " | " << fmt(r.reflectionBeyondFanTexels.p99, 1) << " | "
-           << tailsStatus(r) << " | " << fmt(r.fresnelError.median, 4) << " | " << pct(r.causticsErrors.relativeRmse) << " | "
+           << fmt(r.reflectionOwnShownTexels.p99, 1) << " | " << pct(ownNotShownShare(r)) << " | " << tailsStatus(r) << " | " << fmt(r.fresnelError.median, 4) << " | " << pct(r.causticsErrors.relativeRmse) << " | "
            << pct(r.waterPixels ? double(r.coverageMismatch) / double(r.waterPixels) : std::numeric_limits<double>::quiet_NaN())
            << " | " << fmt(r.drawnSurfacePx.median, 3) << " | " << fmt(r.drawnSurfacePx.p99, 2) << " | "
            << pct(r.shadedPointCm.over2) << " | " << r.nanPixels
@@ -525,18 +550,18 @@ bool writeDocs(const std::string& dir, const RunInfo& info, const std::vector<Re
            << "Views no setting was chosen on (`--held-out`): measured with the default technique alone and kept out "
               "of every median, summary and the ablation. Columns as in the views above.\n\n"
            << "| view | eye | water px | ratio | image SSIM | ΔE00 mean | refr. px median | p99 | beyond fan p99 "
-              "| beyond fan > 2 px | refl. texels median | shown p99 | not shown | beyond fan p99 | tails target | coverage | NaN px |\n"
-           << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+              "| own ray p99 | own ray > 2 px | refl. texels median | shown p99 | beyond fan p99 | own ray shown p99 "
+              "| own ray not shown | tails target | coverage | NaN px |\n"
+           << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
         for (const Record& r : records) {
             if (!r.heldOut) continue;
             md << "| " << r.view << " | " << (r.eyeBelow ? "under water" : "above") << " | " << r.waterPixels << " | "
                << fmt(r.ratio, 2, "×") << " | " << fmt(r.image.ssimWater, 3) << " | " << fmt(r.image.deltaEMeanWater, 2)
                << " | " << fmt(r.refractionPx.median, 3) << " | " << fmt(r.refractionPx.p99, 2) << " | "
-               << fmt(r.refractionBeyondFanPx.p99, 2) << " | " << pct(r.refractionBeyondFanPx.over2) << " | "
-               << fmt(r.reflectionTexels.median, 2) << " | " << fmt(r.reflectionShownTexels.p99, 1) << " | "
-               << pct(r.reflectionTexels.n ? double(r.reflectionNotShown) / double(r.reflectionTexels.n)
-                                           : std::numeric_limits<double>::quiet_NaN())
-               << " | " << fmt(r.reflectionBeyondFanTexels.p99, 1) << " | " << tailsStatus(r) << " | "
+               << fmt(r.refractionBeyondFanPx.p99, 2) << " | " << fmt(r.refractionOwnPx.p99, 2) << " | "
+               << pct(r.refractionOwnPx.over2) << " | " << fmt(r.reflectionTexels.median, 2) << " | "
+               << fmt(r.reflectionShownTexels.p99, 1) << " | " << fmt(r.reflectionBeyondFanTexels.p99, 1) << " | "
+               << fmt(r.reflectionOwnShownTexels.p99, 1) << " | " << pct(ownNotShownShare(r)) << " | " << tailsStatus(r) << " | "
                << pct(r.waterPixels ? double(r.coverageMismatch) / double(r.waterPixels) : std::numeric_limits<double>::quiet_NaN())
                << " | " << r.nanPixels << " |\n";
         }
@@ -549,12 +574,19 @@ bool writeDocs(const std::string& dir, const RunInfo& info, const std::vector<Re
           "hit is not in the refraction pass's view (something between its eye and the hit), so no single depth "
           "layer holds it. In front / behind: the search settled on a point the pass shows nearer its eye than the "
           "exact hit (an occluder, the near side of an edge) or farther.\n\n"
-       << "| view | > 2 px | within the fan | shaded point | hidden | in front | behind |\n|---|---|---|---|---|---|---|\n";
+       << "Own ray: the same along the render's own refracted rays (its shaded point and normal), whose pixels "
+          "over 2 px are the refraction pass's and search's alone.\n\n"
+       << "| view | > 2 px | within the fan | shaded point | hidden | in front | behind | own ray > 2 px | hidden "
+          "| in front | behind |\n|---|---|---|---|---|---|---|---|---|---|---|\n";
     for (const Record& r : records) {
         if (r.technique != "default" || !r.refractionPx.n) continue;
         const double n = double(r.refractionPx.n);
         md << "| " << r.view << (r.heldOut ? " (held out)" : "") << " | " << pct(r.refractionPx.over2);
         for (size_t c : r.refractionCauses) md << " | " << pct(double(c) / n);
+        const double own = double(r.refractionOwnPx.n);
+        md << " | " << pct(r.refractionOwnPx.over2);
+        for (int c = CAUSE_HIDDEN; c < CAUSE_COUNT; ++c)
+            md << " | " << pct(own > 0.0 ? double(r.refractionOwnCauses[c]) / own : std::numeric_limits<double>::quiet_NaN());
         md << " |\n";
     }
     md << "\nEvery technique × view is in `results.csv` / `results.json` beside the run's output.\n";

@@ -21,6 +21,9 @@ struct Record {
     Quantiles refractionPx, refractionM, reflectionTexels, reflectionShownTexels, fresnelError;
     Quantiles reflectionFanTexels, reflectionBeyondFanTexels; //!< the shown pixels' (ViewErrors)
     Quantiles refractionFanPx, refractionBeyondFanPx;         //!< the refraction's pixels' (ViewErrors)
+    Quantiles refractionOwnPx, reflectionOwnShownTexels;      //!< along the render's own rays (ViewErrors)
+    size_t reflectionOwnNotShown = 0;
+    size_t refractionOwnCauses[CAUSE_COUNT] = {};
     Quantiles drawnSurfacePx; //!< the drawn mesh against the analytic surface, screen pixels
     Quantiles shadedPointCm;  //!< the point each pixel shades against its ray's exact crossing, cm (over2: > 2 cm)
     size_t refractionCauses[CAUSE_COUNT] = {}; //!< the refraction's pixels over 2 px, by cause
@@ -38,6 +41,8 @@ struct Summary {
     Quantiles reflectionShownTexels;   //!< the pixels whose mirror hit the reflection pass shows
     Quantiles reflectionFanTexels, reflectionBeyondFanTexels; //!< the shown pixels' (ViewErrors)
     Quantiles refractionFanPx, refractionBeyondFanPx;         //!< the refraction's pixels' (ViewErrors)
+    Quantiles refractionOwnPx, reflectionOwnShownTexels;      //!< along the render's own rays (ViewErrors)
+    double reflectionOwnNotShownShare = std::numeric_limits<double>::quiet_NaN();
     Quantiles drawnSurfacePx;          //!< the drawn mesh against the analytic surface, every pixel of every view
     Quantiles shadedPointCm;           //!< the shaded point against the exact crossing, every pixel of every view
     double worstCoverageShare = std::numeric_limits<double>::quiet_NaN(); //!< the worst view's coverage mismatch

@@ -66,9 +66,13 @@ json toJson(const Record& r)
                { "reflectionBeyondFanTexels", toJson(r.reflectionBeyondFanTexels) },
                { "refractionFanPx", toJson(r.refractionFanPx) },
                { "refractionBeyondFanPx", toJson(r.refractionBeyondFanPx) },
+               { "refractionOwnPx", toJson(r.refractionOwnPx) },
+               { "reflectionOwnShownTexels", toJson(r.reflectionOwnShownTexels) },
+               { "reflectionOwnNotShown", r.reflectionOwnNotShown },
                { "fresnelError", toJson(r.fresnelError) }, { "drawnSurfacePx", toJson(r.drawnSurfacePx) },
                { "shadedPointCm", toJson(r.shadedPointCm) } };
     j["refractionCauses"] = json(std::vector<size_t>(std::begin(r.refractionCauses), std::end(r.refractionCauses)));
+    j["refractionOwnCauses"] = json(std::vector<size_t>(std::begin(r.refractionOwnCauses), std::end(r.refractionOwnCauses)));
     j["work"] = toJson(r.work);
     const CausticsErrors& c = r.causticsErrors;
     j["causticsErrors"] = { { "valid", c.valid }, { "relativeRmse", number(c.relativeRmse) },
@@ -115,11 +119,16 @@ Record recordFrom(const json& j)
     r.reflectionBeyondFanTexels = quantilesFrom(j.at("reflectionBeyondFanTexels"));
     r.refractionFanPx = quantilesFrom(j.at("refractionFanPx"));
     r.refractionBeyondFanPx = quantilesFrom(j.at("refractionBeyondFanPx"));
+    r.refractionOwnPx = quantilesFrom(j.at("refractionOwnPx"));
+    r.reflectionOwnShownTexels = quantilesFrom(j.at("reflectionOwnShownTexels"));
+    r.reflectionOwnNotShown = j.at("reflectionOwnNotShown");
     r.fresnelError = quantilesFrom(j.at("fresnelError"));
     r.drawnSurfacePx = quantilesFrom(j.at("drawnSurfacePx"));
     r.shadedPointCm = quantilesFrom(j.at("shadedPointCm"));
     const std::vector<size_t> causes = j.at("refractionCauses");
     for (size_t c = 0; c < causes.size() && c < size_t(CAUSE_COUNT); ++c) r.refractionCauses[c] = causes[c];
+    const std::vector<size_t> ownCauses = j.at("refractionOwnCauses");
+    for (size_t c = 0; c < ownCauses.size() && c < size_t(CAUSE_COUNT); ++c) r.refractionOwnCauses[c] = ownCauses[c];
     const json& c = j.at("causticsErrors");
     r.causticsErrors.valid = c.at("valid");
     r.causticsErrors.relativeRmse = number(c.at("relativeRmse"));
@@ -148,6 +157,9 @@ json toJson(const Summary& s)
              { "reflectionBeyondFanTexels", toJson(s.reflectionBeyondFanTexels) },
              { "refractionFanPx", toJson(s.refractionFanPx) },
              { "refractionBeyondFanPx", toJson(s.refractionBeyondFanPx) },
+             { "refractionOwnPx", toJson(s.refractionOwnPx) },
+             { "reflectionOwnShownTexels", toJson(s.reflectionOwnShownTexels) },
+             { "reflectionOwnNotShownShare", number(s.reflectionOwnNotShownShare) },
              { "drawnSurfacePx", toJson(s.drawnSurfacePx) }, { "shadedPointCm", toJson(s.shadedPointCm) },
              { "worstCoverageShare", number(s.worstCoverageShare) }, { "worstCoverageView", s.worstCoverageView },
              { "reflectionNotShownShare", number(s.reflectionNotShownShare) },
@@ -174,6 +186,9 @@ Summary summaryFrom(const json& j)
     s.reflectionBeyondFanTexels = quantilesFrom(j.at("reflectionBeyondFanTexels"));
     s.refractionFanPx = quantilesFrom(j.at("refractionFanPx"));
     s.refractionBeyondFanPx = quantilesFrom(j.at("refractionBeyondFanPx"));
+    s.refractionOwnPx = quantilesFrom(j.at("refractionOwnPx"));
+    s.reflectionOwnShownTexels = quantilesFrom(j.at("reflectionOwnShownTexels"));
+    s.reflectionOwnNotShownShare = number(j.at("reflectionOwnNotShownShare"));
     s.drawnSurfacePx = quantilesFrom(j.at("drawnSurfacePx"));
     s.shadedPointCm = quantilesFrom(j.at("shadedPointCm"));
     s.worstCoverageShare = number(j.at("worstCoverageShare"));

@@ -99,8 +99,8 @@ Summary summarize(const std::string& name, const std::vector<Record>& records, s
     Summary s;
     s.technique = name;
     std::vector<double> ratios, frames, caustics, noise, ssims, deltaEs;
-    std::vector<float> px, m, refl, reflShown, reflFan, reflBeyond, refrFan, refrBeyond, fres, drawn, shaded;
-    size_t notShown = 0, coverageMismatch = 0, waterPixels = 0;
+    std::vector<float> px, m, refl, reflShown, reflFan, reflBeyond, refrFan, refrBeyond, refrOwn, reflOwn, fres, drawn, shaded;
+    size_t notShown = 0, ownNotShown = 0, coverageMismatch = 0, waterPixels = 0;
     for (size_t i = 0; i < records.size(); ++i) {
         const Record& r = records[i];
         if (r.technique != name) continue;
@@ -135,6 +135,9 @@ Summary summarize(const std::string& name, const std::vector<Record>& records, s
         reflBeyond.insert(reflBeyond.end(), errors[i].reflectionBeyondFanTexels.begin(), errors[i].reflectionBeyondFanTexels.end());
         refrFan.insert(refrFan.end(), errors[i].refractionFanPx.begin(), errors[i].refractionFanPx.end());
         refrBeyond.insert(refrBeyond.end(), errors[i].refractionBeyondFanPx.begin(), errors[i].refractionBeyondFanPx.end());
+        refrOwn.insert(refrOwn.end(), errors[i].refractionOwnPx.begin(), errors[i].refractionOwnPx.end());
+        reflOwn.insert(reflOwn.end(), errors[i].reflectionOwnShownTexels.begin(), errors[i].reflectionOwnShownTexels.end());
+        ownNotShown += errors[i].reflectionOwnNotShown;
         notShown += errors[i].reflectionNotShown;
         coverageMismatch += r.coverageMismatch;
         waterPixels += r.waterPixels;
@@ -172,6 +175,9 @@ Summary summarize(const std::string& name, const std::vector<Record>& records, s
     s.reflectionBeyondFanTexels = quantiles(reflBeyond);
     s.refractionFanPx = quantiles(refrFan);
     s.refractionBeyondFanPx = quantiles(refrBeyond);
+    s.refractionOwnPx = quantiles(refrOwn);
+    s.reflectionOwnShownTexels = quantiles(reflOwn);
+    if (!reflOwn.empty() || ownNotShown) s.reflectionOwnNotShownShare = double(ownNotShown) / double(reflOwn.size() + ownNotShown);
     if (!refl.empty()) s.reflectionNotShownShare = double(notShown) / double(refl.size());
     if (waterPixels) s.coverageMismatchShare = double(coverageMismatch) / double(waterPixels);
     s.fresnel = quantiles(fres);
@@ -467,7 +473,7 @@ int main(int argc, char** argv)
             std::vector<float> a = ve.refractionPx, b = ve.refractionM, c = ve.reflectionTexels, d = ve.fresnel,
                                c2 = ve.reflectionShownTexels, c3 = ve.reflectionFanTexels,
                                c4 = ve.reflectionBeyondFanTexels, a2 = ve.refractionFanPx,
-                               a3 = ve.refractionBeyondFanPx;
+                               a3 = ve.refractionBeyondFanPx, a4 = ve.refractionOwnPx, c5 = ve.reflectionOwnShownTexels;
             r.refractionPx = quantiles(a);
             r.refractionM = quantiles(b);
             r.reflectionTexels = quantiles(c);
@@ -476,6 +482,10 @@ int main(int argc, char** argv)
             r.reflectionBeyondFanTexels = quantiles(c4);
             r.refractionFanPx = quantiles(a2);
             r.refractionBeyondFanPx = quantiles(a3);
+            r.refractionOwnPx = quantiles(a4);
+            r.reflectionOwnShownTexels = quantiles(c5);
+            r.reflectionOwnNotShown = ve.reflectionOwnNotShown;
+            std::copy(std::begin(ve.refractionOwnCauses), std::end(ve.refractionOwnCauses), std::begin(r.refractionOwnCauses));
             r.reflectionNotShown = ve.reflectionNotShown;
             r.fresnelError = quantiles(d);
             std::vector<float> ds = ve.drawnSurfacePx, sp = ve.shadedPointCm;
