@@ -522,6 +522,27 @@ TEST(BenchMetric, AReflectionLookupOffTheMirrorRaysHitReportsALargeError)
     EXPECT_GT(ownOffset.median, 5.0);
 }
 
+// Looking along waves from 30 cm up, the mirror rays of the far crests' back faces go down: the
+// waves send them back under the level, where the shading's rule for the light the waves take back
+// decides, not a lookup. They are counted apart, not as hits the reflection pass cannot show.
+TEST(BenchMetric, MirrorRaysTheWavesSendUnderTheLevelAreCountedApart)
+{
+    FlatScene sc;
+    REQUIRE_GL(sc.probe);
+    sc.surface->setResolution(257);
+    sc.surface->setSize(60.0f);
+    sc.surface->setWaves({ testing_gl::makeWave(0.3f, 1.0f, 3.0f, 0.04f) });
+    sc.probe.camera()->setViewMatrixAsLookAt(osg::Vec3d(0, -4, 0.3), osg::Vec3d(0, 20, 0), osg::Vec3d(0, 0, 1));
+    const ViewErrors v = sc.measure(1.333);
+    const size_t shown = v.reflectionOwnShownTexels.size();
+    RecordProperty("own mirror rays shown / not shown / sent under",
+                   std::to_string(shown) + " / " + std::to_string(v.reflectionOwnNotShown) + " / " + std::to_string(v.reflectionOwnSentUnder));
+    ASSERT_GT(shown, 2000u);
+    EXPECT_GT(v.reflectionOwnSentUnder, 200u);
+    // every pixel's own mirror ray is one of the three (the measured reflection pixels)
+    EXPECT_EQ(shown + v.reflectionOwnNotShown + v.reflectionOwnSentUnder, v.reflectionTexels.size());
+}
+
 namespace {
 
 // The water's caustics texture (rendered by `probe`) against photons traced exactly through its

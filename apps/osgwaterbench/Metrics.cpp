@@ -226,7 +226,9 @@ ViewErrors measureView(const ReferenceImage& ref, const Estimate& e, const RayCa
                         ++v.reflectionNotShown; // hidden, under the level, or off the texture
                     // the render's own mirror ray
                     osg::Vec2d ownHit;
-                    if (own.valid) {
+                    if (own.valid && (e.eyeBelow ? own.Rr.z >= 0.0 : own.Rr.z <= 0.0))
+                        ++v.reflectionOwnSentUnder; // the shading's rule for light the waves take back, no lookup's
+                    else if (own.valid) {
                         const glm::dvec3 Y = own.reflected.hit ? own.reflected.point : own.Rr;
                         const bool shown = texel(e.reflectionMVP, osg::Vec4d(Y.x, Y.y, Y.z, own.reflected.hit ? 1.0 : 0.0),
                                                  e.reflectionSize, ownHit) && onTexture(ownHit, e.reflectionSize) &&

@@ -83,10 +83,11 @@ struct ViewErrors {
     //! normal it shades with (DEBUG_SURFACE, DEBUG_SLOPES), traced exactly. Their lookups' errors are
     //! the passes' and searches' alone, whatever the pixel's filtering chose: the refraction's in
     //! screen pixels (the reference's metres-to-pixels) with its pixels over 2 px by cause (hidden,
-    //! in front, behind), the reflection's in texels where its pass shows the hit, and how many it
-    //! cannot show.
+    //! in front, behind), the reflection's in texels where its pass shows the hit, how many of the
+    //! rays rising from the level it cannot show, and how many the waves send back under the level
+    //! (their light is the shading's rule for the light the waves take back, no lookup's).
     std::vector<float> refractionOwnPx, reflectionOwnShownTexels;
-    size_t reflectionOwnNotShown = 0;
+    size_t reflectionOwnNotShown = 0, reflectionOwnSentUnder = 0;
     size_t refractionOwnCauses[CAUSE_COUNT] = {};
     size_t nanPixels = 0;                //!< pixels with a NaN or Inf in any read-back output
 };

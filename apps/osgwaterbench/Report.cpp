@@ -55,6 +55,7 @@ nlohmann::json toJson(const Record& r)
     j["refraction_own_over2_share"] = number(r.refractionOwnPx.over2);
     addQuantiles(j, "reflection_own_shown_texels", r.reflectionOwnShownTexels);
     j["reflection_own_not_shown"] = r.reflectionOwnNotShown;
+    j["reflection_own_sent_under"] = r.reflectionOwnSentUnder;
     addQuantiles(j, "reflection_texels", r.reflectionTexels);
     addQuantiles(j, "reflection_shown_texels", r.reflectionShownTexels);
     j["reflection_not_shown"] = r.reflectionNotShown;
@@ -260,10 +261,18 @@ bool writeCsv(const std::string& file, const std::vector<Record>& records, std::
 
 namespace {
 
+// of the render's own mirror rays that rise from the level, the share its reflection pass cannot show
 double ownNotShownShare(const Record& r)
 {
     const double n = double(r.reflectionOwnShownTexels.n + r.reflectionOwnNotShown);
     return n > 0.0 ? double(r.reflectionOwnNotShown) / n : std::numeric_limits<double>::quiet_NaN();
+}
+
+// of all the render's own mirror rays, the share the waves send back under the level
+double sentUnderShare(const Record& r)
+{
+    const double n = double(r.reflectionOwnShownTexels.n + r.reflectionOwnNotShown + r.reflectionOwnSentUnder);
+    return n > 0.0 ? double(r.reflectionOwnSentUnder) / n : std::numeric_limits<double>::quiet_NaN();
 }
 
 // A view's tails against their targets, along the render's own rays (the lookups' errors alone,
@@ -516,13 +525,15 @@ bool writeDocs(const std::string& dir, const RunInfo& info, const std::vector<Re
        << "Own ray: the errors of the lookups along the rays the render traced (its shaded point and normal, "
           "traced exactly), the passes' and searches' alone whatever the pixel's filtering chose. Tails target, along "
           "those rays: the refraction's p99 ≤ 2 px with ≤ 1% of pixels over 2 px, and the reflection's where its pass "
-          "shows the hit p99 ≤ 4 texels with ≤ 2% not shown; met or missed.\n\n"
+          "shows the hit p99 ≤ 4 texels with ≤ 2% of the rays rising from the level not shown; met or missed. The mirror "
+          "rays the waves send back under the level (\"sent under\") are no lookup's: their light is the shading's rule "
+          "for the light the waves take back, which the image error measures.\n\n"
        << "| view | eye | water px | frame ms | plain ms | ratio | image SSIM | ΔE00 mean | ΔE00 p95 | reference noise ΔE00 "
           "| image target | refr. px median | p99 | max | refr. fan median | beyond fan p99 | beyond fan > 2 px | own ray p99 "
           "| own ray > 2 px | refr. m median | refl. texels median | p99 | shown p99 | not shown | refl. fan median | beyond fan p99 "
-          "| own ray shown p99 | own ray not shown | tails target | Fresnel err. median | caustics RMSE | coverage "
-          "| surface px median | p99 | shaded > 2 cm | NaN px |\n"
-       << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+          "| own ray shown p99 | own ray not shown | own ray sent under | tails target | Fresnel err. median | caustics RMSE "
+          "| coverage | surface px median | p99 | shaded > 2 cm | NaN px |\n"
+       << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
     for (const Record& r : records) {
         if (r.technique != "default" || r.heldOut) continue;
         md << "| " << r.view << " | " << (r.eyeBelow ? "under water" : "above") << " | " << r.waterPixels << " | "
@@ -539,7 +550,8 @@ bool writeDocs(const std::string& dir, const RunInfo& info, const std::vector<Re
            << pct(r.reflectionTexels.n ? double(r.reflectionNotShown) / double(r.reflectionTexels.n)
                                        : std::numeric_limits<double>::quiet_NaN())
            << " | " << fmt(r.reflectionFanTexels.median, 1) << " | " << fmt(r.reflectionBeyondFanTexels.p99, 1) << " | "
-           << fmt(r.reflectionOwnShownTexels.p99, 1) << " | " << pct(ownNotShownShare(r)) << " | " << tailsStatus(r) << " | " << fmt(r.fresnelError.median, 4) << " | " << pct(r.causticsErrors.relativeRmse) << " | "
+           << fmt(r.reflectionOwnShownTexels.p99, 1) << " | " << pct(ownNotShownShare(r)) << " | " << pct(sentUnderShare(r))
+           << " | " << tailsStatus(r) << " | " << fmt(r.fresnelError.median, 4) << " | " << pct(r.causticsErrors.relativeRmse) << " | "
            << pct(r.waterPixels ? double(r.coverageMismatch) / double(r.waterPixels) : std::numeric_limits<double>::quiet_NaN())
            << " | " << fmt(r.drawnSurfacePx.median, 3) << " | " << fmt(r.drawnSurfacePx.p99, 2) << " | "
            << pct(r.shadedPointCm.over2) << " | " << r.nanPixels
@@ -551,8 +563,8 @@ bool writeDocs(const std::string& dir, const RunInfo& info, const std::vector<Re
               "of every median, summary and the ablation. Columns as in the views above.\n\n"
            << "| view | eye | water px | ratio | image SSIM | ΔE00 mean | refr. px median | p99 | beyond fan p99 "
               "| own ray p99 | own ray > 2 px | refl. texels median | shown p99 | beyond fan p99 | own ray shown p99 "
-              "| own ray not shown | tails target | coverage | NaN px |\n"
-           << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+              "| own ray not shown | own ray sent under | tails target | coverage | NaN px |\n"
+           << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
         for (const Record& r : records) {
             if (!r.heldOut) continue;
             md << "| " << r.view << " | " << (r.eyeBelow ? "under water" : "above") << " | " << r.waterPixels << " | "
@@ -561,7 +573,8 @@ bool writeDocs(const std::string& dir, const RunInfo& info, const std::vector<Re
                << fmt(r.refractionBeyondFanPx.p99, 2) << " | " << fmt(r.refractionOwnPx.p99, 2) << " | "
                << pct(r.refractionOwnPx.over2) << " | " << fmt(r.reflectionTexels.median, 2) << " | "
                << fmt(r.reflectionShownTexels.p99, 1) << " | " << fmt(r.reflectionBeyondFanTexels.p99, 1) << " | "
-               << fmt(r.reflectionOwnShownTexels.p99, 1) << " | " << pct(ownNotShownShare(r)) << " | " << tailsStatus(r) << " | "
+               << fmt(r.reflectionOwnShownTexels.p99, 1) << " | " << pct(ownNotShownShare(r)) << " | "
+               << pct(sentUnderShare(r)) << " | " << tailsStatus(r) << " | "
                << pct(r.waterPixels ? double(r.coverageMismatch) / double(r.waterPixels) : std::numeric_limits<double>::quiet_NaN())
                << " | " << r.nanPixels << " |\n";
         }

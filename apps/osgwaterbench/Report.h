@@ -22,7 +22,7 @@ struct Record {
     Quantiles reflectionFanTexels, reflectionBeyondFanTexels; //!< the shown pixels' (ViewErrors)
     Quantiles refractionFanPx, refractionBeyondFanPx;         //!< the refraction's pixels' (ViewErrors)
     Quantiles refractionOwnPx, reflectionOwnShownTexels;      //!< along the render's own rays (ViewErrors)
-    size_t reflectionOwnNotShown = 0;
+    size_t reflectionOwnNotShown = 0, reflectionOwnSentUnder = 0;
     size_t refractionOwnCauses[CAUSE_COUNT] = {};
     Quantiles drawnSurfacePx; //!< the drawn mesh against the analytic surface, screen pixels
     Quantiles shadedPointCm;  //!< the point each pixel shades against its ray's exact crossing, cm (over2: > 2 cm)

@@ -69,6 +69,7 @@ json toJson(const Record& r)
                { "refractionOwnPx", toJson(r.refractionOwnPx) },
                { "reflectionOwnShownTexels", toJson(r.reflectionOwnShownTexels) },
                { "reflectionOwnNotShown", r.reflectionOwnNotShown },
+               { "reflectionOwnSentUnder", r.reflectionOwnSentUnder },
                { "fresnelError", toJson(r.fresnelError) }, { "drawnSurfacePx", toJson(r.drawnSurfacePx) },
                { "shadedPointCm", toJson(r.shadedPointCm) } };
     j["refractionCauses"] = json(std::vector<size_t>(std::begin(r.refractionCauses), std::end(r.refractionCauses)));
@@ -122,6 +123,7 @@ Record recordFrom(const json& j)
     r.refractionOwnPx = quantilesFrom(j.at("refractionOwnPx"));
     r.reflectionOwnShownTexels = quantilesFrom(j.at("reflectionOwnShownTexels"));
     r.reflectionOwnNotShown = j.at("reflectionOwnNotShown");
+    r.reflectionOwnSentUnder = j.at("reflectionOwnSentUnder");
     r.fresnelError = quantilesFrom(j.at("fresnelError"));
     r.drawnSurfacePx = quantilesFrom(j.at("drawnSurfacePx"));
     r.shadedPointCm = quantilesFrom(j.at("shadedPointCm"));

@@ -485,6 +485,7 @@ int main(int argc, char** argv)
             r.refractionOwnPx = quantiles(a4);
             r.reflectionOwnShownTexels = quantiles(c5);
             r.reflectionOwnNotShown = ve.reflectionOwnNotShown;
+            r.reflectionOwnSentUnder = ve.reflectionOwnSentUnder;
             std::copy(std::begin(ve.refractionOwnCauses), std::end(ve.refractionOwnCauses), std::begin(r.refractionOwnCauses));
             r.reflectionNotShown = ve.reflectionNotShown;
             r.fresnelError = quantiles(d);
