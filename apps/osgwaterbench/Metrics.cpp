@@ -88,14 +88,16 @@ struct OwnRays {
     Hit reflected, refracted;
 };
 
-OwnRays ownRays(const Estimate& e, const RayCaster& scene, int x, int y)
+OwnRays ownRays(const Estimate& e, const ViewRays& rays, const RayCaster& scene, int x, int y)
 {
     OwnRays o;
     if (!e.shaded.valid() || !e.slopes.valid()) return o;
     const osg::Vec4f u = px(e.shaded.get(), x, y), s = px(e.slopes.get(), x, y);
     if (!(u.w() > 1.5f && u.w() < 2.5f) || !(s.w() > 1.5f && s.w() < 2.5f) || !finite(u) || !finite(s)) return o;
     const glm::dvec3 U(u.x(), u.y(), u.z()), eye(e.eye.x(), e.eye.y(), e.eye.z());
-    const glm::dvec3 D = glm::normalize(U - eye);
+    // the pixel's ray, not U - eye: an eye on the water shades points micrometres from it, closer
+    // than the float U is exact
+    const glm::dvec3 D = rays.through(x + 0.5, y + 0.5);
     glm::dvec3 N = glm::normalize(glm::dvec3(-s.x(), -s.y(), 1.0));
     if (e.eyeBelow) N = -N;
     if (glm::dot(N, D) > 0.0) N = -N; // a facet turned from the eye: as the reference takes it
@@ -175,6 +177,7 @@ ViewErrors measureView(const ReferenceImage& ref, const Estimate& e, const RayCa
     v.waterPixels = ref.waterPixels;
     // the reflection pass's camera: the eye mirrored in the level
     const osg::Vec3d mirrored(e.eye.x(), e.eye.y(), 2.0 * e.level - e.eye.z());
+    const ViewRays pixelRays(e.view, e.projection, ref.width, ref.height);
     for (int y = 0; y < ref.height; ++y)
         for (int x = 0; x < ref.width; ++x) {
             const PixelRef& r = ref.at(x, y);
@@ -194,7 +197,7 @@ ViewErrors measureView(const ReferenceImage& ref, const Estimate& e, const RayCa
                     v.shadedPointCm.push_back(100.0f * shadedOffM);
                 }
             }
-            const OwnRays own = ownRays(e, scene, x, y);
+            const OwnRays own = ownRays(e, pixelRays, scene, x, y);
             if (e.fresnel.valid()) {
                 const osg::Vec4f f = px(e.fresnel.get(), x, y);
                 if (f.w() > 1.5f && std::isfinite(f.x())) v.fresnel.push_back(std::fabs(f.x() - r.fresnel));

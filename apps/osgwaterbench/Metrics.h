@@ -41,6 +41,7 @@ struct Estimate {
     osg::ref_ptr<osg::Image> slopes;   //!< the normal's slopes and roughness each pixel shades with (DEBUG_SLOPES)
     double airIOR = 1.0, waterIOR = 1.333; //!< the render's media
     osg::Vec3d eye;                    //!< the view's eye, local frame
+    osg::Matrixd view, projection;     //!< the view's camera (local frame -> clip): its pixels' rays
     double pixelsPerRadian = 0.0;      //!< the view's focal length in pixels (at the centre of the view)
     osg::Matrixd refractionView;       //!< local -> refraction pass eye space
     osg::Vec3d refractionEye;          //!< the refraction camera's position, local frame

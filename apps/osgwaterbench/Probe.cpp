@@ -94,6 +94,8 @@ Estimate Probe::capture(osgWater::WaterNode& water, double t)
 
     // the water is not transformed: its local frame is the world's
     e.eye = osg::Matrixd::inverse(camera()->getViewMatrix()).getTrans();
+    e.view = camera()->getViewMatrix();
+    e.projection = camera()->getProjectionMatrix();
     e.pixelsPerRadian = camera()->getProjectionMatrix()(1, 1) * 0.5 * camera()->getViewport()->height();
     e.level = water.getSurface()->getLevel();
     e.airIOR = water.getSettings()->getAirIOR();
